@@ -1,0 +1,330 @@
+/* ----------------------------------------------------------------------
+   fix couple/coarse -- DEM side of the in-process CFD-DEM coupling of the
+   coarse-particle coupling plugin (coarse-dem). Documentation: see the
+   header fix_couple_coarse.h.
+
+   LIGGGHTS is free software under the GNU GPL v2 or later; this file is
+   distributed under the same terms so that it can be compiled into LIGGGHTS.
+------------------------------------------------------------------------- */
+
+#include "fix_couple_coarse.h"
+
+#include <mpi.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "atom.h"
+#include "error.h"
+#include "memory.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+
+// Parse a yes/no keyword value; stops with a LIGGGHTS error otherwise.
+int yes_no(Error *error, const char *keyword, const char *value)
+{
+  if (strcmp(value, "yes") == 0) return 1;
+  if (strcmp(value, "no") == 0) return 0;
+  char msg[256];
+  snprintf(msg, sizeof(msg),
+           "Illegal fix couple/coarse command: keyword %s expects yes or no, got '%s'",
+           keyword, value);
+  error->all(FLERR, msg);
+  return 0;
+}
+
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixCoupleCoarse::FixCoupleCoarse(LAMMPS *lmp, int narg, char **arg) :
+  Fix(lmp, narg, arg),
+  fcoupling_(NULL),
+  apply_(1),
+  check_order_(1),
+  pulled_tag_(NULL),
+  npulled_(0),
+  maxpulled_(0),
+  pull_step_(-1),
+  npull_(0),
+  npush_(0)
+{
+  // arg[0..2] = ID group-ID couple/coarse; then keyword/value pairs
+  int iarg = 3;
+  while (iarg < narg) {
+    if (iarg + 1 >= narg) {
+      char msg[256];
+      snprintf(msg, sizeof(msg),
+               "Illegal fix couple/coarse command: keyword %s needs a value", arg[iarg]);
+      error->all(FLERR, msg);
+    }
+    if (strcmp(arg[iarg], "apply") == 0) {
+      apply_ = yes_no(error, arg[iarg], arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "check_order") == 0) {
+      check_order_ = yes_no(error, arg[iarg], arg[iarg + 1]);
+    } else {
+      char msg[256];
+      snprintf(msg, sizeof(msg),
+               "Illegal fix couple/coarse command: unknown keyword '%s' "
+               "(valid keywords: apply, check_order)", arg[iarg]);
+      error->all(FLERR, msg);
+    }
+    iarg += 2;
+  }
+
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
+    error->all(FLERR, "Fix couple/coarse requires atom attributes radius, rmass, density "
+                      "(atom_style sphere or granular)");
+
+  // global output: total coupling force (3 components, extensive)
+  vector_flag = 1;
+  size_vector = 3;
+  global_freq = 1;
+  extvector = 1;
+
+  // per-atom state travels with atoms (exchange, sorting) and into restart files;
+  // new atoms (inserted particles) get a zero force via set_arrays
+  restart_peratom = 1;
+  create_attribute = 1;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);  // grow/copy/exchange
+  atom->add_callback(1);  // restart
+
+  for (int i = 0; i < atom->nmax; i++)
+    fcoupling_[i][0] = fcoupling_[i][1] = fcoupling_[i][2] = 0.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixCoupleCoarse::~FixCoupleCoarse()
+{
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
+  memory->destroy(fcoupling_);
+  memory->destroy(pulled_tag_);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixCoupleCoarse::setmask()
+{
+  int mask = 0;
+  mask |= POST_FORCE;
+  return mask;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCoupleCoarse::init()
+{
+  if (strstr(update->integrate_style, "respa"))
+    error->all(FLERR, "Fix couple/coarse does not support run_style respa");
+}
+
+/* ----------------------------------------------------------------------
+   setup: the forces of this fix are part of the force on each atom from
+   the first step on, like every post_force fix
+------------------------------------------------------------------------- */
+
+void FixCoupleCoarse::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixCoupleCoarse::post_force(int)
+{
+  if (!apply_) return;
+  double **f = atom->f;
+  int *mask = atom->mask;
+  const int n = atom->nlocal;
+  for (int i = 0; i < n; i++) {
+    if (mask[i] & groupbit) {
+      f[i][0] += fcoupling_[i][0];
+      f[i][1] += fcoupling_[i][1];
+      f[i][2] += fcoupling_[i][2];
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   global vector: total stored coupling force over all procs
+   (collective: thermo output calls it on every proc)
+------------------------------------------------------------------------- */
+
+double FixCoupleCoarse::compute_vector(int n)
+{
+  double local[3], all[3];
+  total_force(local);
+  MPI_Allreduce(local, all, 3, MPI_DOUBLE, MPI_SUM, world);
+  if (n < 0 || n > 2) return 0.0;
+  return all[n];
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixCoupleCoarse::memory_usage()
+{
+  return 3.0 * atom->nmax * sizeof(double) + maxpulled_ * sizeof(int);
+}
+
+/* ----------------------------------------------------------------------
+   per-atom array bookkeeping (called by Atom through the callbacks)
+------------------------------------------------------------------------- */
+
+void FixCoupleCoarse::grow_arrays(int nmax)
+{
+  memory->grow(fcoupling_, nmax, 3, "fix_couple_coarse:fcoupling");
+}
+
+void FixCoupleCoarse::copy_arrays(int i, int j, int)
+{
+  fcoupling_[j][0] = fcoupling_[i][0];
+  fcoupling_[j][1] = fcoupling_[i][1];
+  fcoupling_[j][2] = fcoupling_[i][2];
+}
+
+void FixCoupleCoarse::set_arrays(int i)
+{
+  fcoupling_[i][0] = fcoupling_[i][1] = fcoupling_[i][2] = 0.0;
+}
+
+int FixCoupleCoarse::pack_exchange(int i, double *buf)
+{
+  buf[0] = fcoupling_[i][0];
+  buf[1] = fcoupling_[i][1];
+  buf[2] = fcoupling_[i][2];
+  return 3;
+}
+
+int FixCoupleCoarse::unpack_exchange(int nlocal, double *buf)
+{
+  fcoupling_[nlocal][0] = buf[0];
+  fcoupling_[nlocal][1] = buf[1];
+  fcoupling_[nlocal][2] = buf[2];
+  return 3;
+}
+
+// restart record per atom: [length=4, fx, fy, fz]
+int FixCoupleCoarse::pack_restart(int i, double *buf)
+{
+  buf[0] = 4;
+  buf[1] = fcoupling_[i][0];
+  buf[2] = fcoupling_[i][1];
+  buf[3] = fcoupling_[i][2];
+  return 4;
+}
+
+void FixCoupleCoarse::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  // skip the records of the fixes before this one
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  fcoupling_[nlocal][0] = extra[nlocal][m++];
+  fcoupling_[nlocal][1] = extra[nlocal][m++];
+  fcoupling_[nlocal][2] = extra[nlocal][m++];
+}
+
+int FixCoupleCoarse::size_restart(int)
+{
+  return 4;
+}
+
+int FixCoupleCoarse::maxsize_restart()
+{
+  return 4;
+}
+
+/* ----------------------------------------------------------------------
+   coupling interface
+------------------------------------------------------------------------- */
+
+int FixCoupleCoarse::in_group(int i) const
+{
+  return (atom->mask[i] & groupbit) != 0;
+}
+
+int FixCoupleCoarse::nlocal() const
+{
+  int n = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (in_group(i)) n++;
+  return n;
+}
+
+void FixCoupleCoarse::pull(double *x, double *v, double *radius, double *density,
+                           int *type, long long *id)
+{
+  const int n = nlocal();
+  if (n > maxpulled_) {
+    maxpulled_ = n;
+    memory->grow(pulled_tag_, maxpulled_, "fix_couple_coarse:pulled_tag");
+  }
+
+  double **ax = atom->x;
+  double **av = atom->v;
+  int k = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!in_group(i)) continue;
+    if (x) { x[3*k] = ax[i][0]; x[3*k+1] = ax[i][1]; x[3*k+2] = ax[i][2]; }
+    if (v) { v[3*k] = av[i][0]; v[3*k+1] = av[i][1]; v[3*k+2] = av[i][2]; }
+    if (radius) radius[k] = atom->radius[i];
+    if (density) density[k] = atom->density[i];
+    if (type) type[k] = atom->type[i];
+    if (id) id[k] = static_cast<long long>(atom->tag[i]);
+    pulled_tag_[k] = atom->tag[i];
+    k++;
+  }
+  npulled_ = n;
+  pull_step_ = update->ntimestep;
+  npull_++;
+}
+
+void FixCoupleCoarse::push_forces(const double *f)
+{
+  if (pull_step_ < 0)
+    error->one(FLERR, "Fix couple/coarse: push_forces() without a preceding pull()");
+
+  if (check_order_) {
+    int same = (update->ntimestep == pull_step_);
+    int k = 0;
+    for (int i = 0; same && i < atom->nlocal; i++) {
+      if (!in_group(i)) continue;
+      if (k >= npulled_ || atom->tag[i] != pulled_tag_[k]) same = 0;
+      k++;
+    }
+    if (k != npulled_) same = 0;
+    if (!same)
+      error->one(FLERR, "Fix couple/coarse: particles changed between pull() and push_forces() "
+                        "(a DEM step ran or particles were added, removed or reordered); "
+                        "push the forces before the next run");
+  }
+
+  int k = 0;
+  for (int i = 0; i < atom->nlocal && k < npulled_; i++) {
+    if (!in_group(i)) continue;
+    fcoupling_[i][0] = f[3*k];
+    fcoupling_[i][1] = f[3*k+1];
+    fcoupling_[i][2] = f[3*k+2];
+    k++;
+  }
+  npush_++;
+}
+
+void FixCoupleCoarse::total_force(double out[3]) const
+{
+  out[0] = out[1] = out[2] = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!in_group(i)) continue;
+    out[0] += fcoupling_[i][0];
+    out[1] += fcoupling_[i][1];
+    out[2] += fcoupling_[i][2];
+  }
+}
