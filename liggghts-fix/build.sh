@@ -22,6 +22,7 @@
 #   script, CMakeLists.txt) is stored next to the installed files; with an unchanged key the
 #   script does nothing.
 set -euo pipefail
+trap 'echo "liggghts-fix/build.sh: ERROR: command failed at line $LINENO: $BASH_COMMAND" >&2' ERR
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 project="$(cd "$here/.." && pwd)"
@@ -96,7 +97,7 @@ if [ ! -f "$work/.patched" ]; then
         cp -a "$src_top/src" "$work.tmp/src"
         [ -f "$src_top/LICENSE" ] && cp -a "$src_top/LICENSE" "$work.tmp/" || true
     else
-        tar -C "$work.tmp" --strip-components=1 -xf "$tarball"
+        tar -C "$work.tmp" --no-same-owner --strip-components=1 -xf "$tarball"
     fi
     for p in ${patches[@]+"${patches[@]}"}; do
         if (cd "$work.tmp" && patch -p1 -R -s -f --dry-run < "$p" >/dev/null 2>&1); then
@@ -164,7 +165,9 @@ rm -rf "$prefix"
 mv "$prefix.tmp" "$prefix"
 
 # ------------------------------------------------------------------ 6. check
-if ! "$prefix/bin/liggghts" -h 2>/dev/null | grep -q 'couple/coarse'; then
+# (output captured first: grep -q would stop reading early and pipefail would see SIGPIPE)
+help="$(cd /tmp && "$prefix/bin/liggghts" -log none -h 2>&1 || true)"
+if ! grep -q 'couple/coarse' <<< "$help"; then
     rm -f "$prefix/.build-key"
     die "the built liggghts does not list fix couple/coarse in 'liggghts -h'"
 fi

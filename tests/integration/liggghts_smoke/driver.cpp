@@ -1,0 +1,191 @@
+// Smoke test of the in-process DEM: LIGGGHTS as a library, driven the way the coupled solver
+// drives it, through fix couple/coarse.
+//
+//   driver in.smoke            (serial or under mpirun)
+//
+// The input (in.smoke) makes 81 non-touching spheres under gravity, moving through a periodic
+// x boundary. Each coupling cycle the driver pulls the particles, pushes an upward force
+// F = m g on the particles with odd ID and none on those with even ID, and runs the DEM.
+// Only every second cycle pushes: in the others the stored force must persist, also for
+// particles that moved to another rank or were sorted. At the end:
+//   - odd IDs  (F = -weight): height and vertical velocity unchanged;
+//   - even IDs (no force):    free fall, z = z0 - g t^2 / 2 (exact for velocity Verlet);
+//   - total_force() and the fix's global vector equal the sum of pushed forces;
+//   - with 2 or more ranks, some particles changed rank (so migration was exercised).
+// Prints PASS/FAIL lines and "N passed, N failed"; exit status 0 only if all passed.
+
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "lammps.h"
+#include "input.h"
+#include "modify.h"
+#include "fix.h"
+#include "fix_couple_coarse.h"
+
+namespace {
+
+const double g = 9.81;
+const double z0 = 0.05;
+const double dt = 1.0e-5;
+const int steps_per_cycle = 200;
+const int ncycles = 10;
+const int nparticles = 81;
+
+int rank = 0;
+int npass = 0, nfail = 0;
+
+void check(bool ok, const std::string &what)
+{
+    if (ok) npass++; else nfail++;
+    if (rank == 0) std::printf("%s: %s\n", ok ? "PASS" : "FAIL", what.c_str());
+}
+
+double mass(double r, double rho)
+{
+    // same expression as LIGGGHTS' "set density" so the weight cancels gravity bit for bit
+    return 4.0 * M_PI / 3.0 * r * r * r * rho;
+}
+
+struct Particles {
+    int n = 0;
+    std::vector<double> x, v, r, rho;
+    std::vector<int> type;
+    std::vector<long long> id;
+};
+
+Particles pull(LAMMPS_NS::FixCoupleCoarse *fix)
+{
+    Particles p;
+    p.n = fix->nlocal();
+    p.x.resize(3 * p.n); p.v.resize(3 * p.n);
+    p.r.resize(p.n); p.rho.resize(p.n); p.type.resize(p.n); p.id.resize(p.n);
+    fix->pull(p.x.data(), p.v.data(), p.r.data(), p.rho.data(), p.type.data(), p.id.data());
+    return p;
+}
+
+// upward force m g on odd IDs, nothing on even IDs; returns the local sum of Fz
+double push(LAMMPS_NS::FixCoupleCoarse *fix, const Particles &p)
+{
+    std::vector<double> f(3 * p.n, 0.0);
+    double sum = 0.0;
+    for (int i = 0; i < p.n; i++) {
+        if (p.id[i] % 2 == 1) {
+            f[3 * i + 2] = mass(p.r[i], p.rho[i]) * g;
+            sum += f[3 * i + 2];
+        }
+    }
+    fix->push_forces(f.data());
+    return sum;
+}
+
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    MPI_Init(&argc, &argv);
+    int nprocs = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
+    const char *input = argc > 1 ? argv[1] : "in.smoke";
+
+    char *lmpargv[] = {const_cast<char *>("liggghts"), const_cast<char *>("-screen"),
+                       const_cast<char *>("none"), const_cast<char *>("-log"),
+                       const_cast<char *>("log.liggghts"), NULL};
+    LAMMPS_NS::LAMMPS *lmp = new LAMMPS_NS::LAMMPS(5, lmpargv, MPI_COMM_WORLD);
+    lmp->input->file(input);
+
+    int ifix = lmp->modify->find_fix("cpl");
+    LAMMPS_NS::FixCoupleCoarse *fix =
+        ifix < 0 ? NULL : dynamic_cast<LAMMPS_NS::FixCoupleCoarse *>(lmp->modify->fix[ifix]);
+    check(fix != NULL, "fix cpl found through lmp->modify and is a FixCoupleCoarse");
+    if (!fix) {
+        MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+
+    // ---- initial state
+    Particles p = pull(fix);
+    int ntotal = 0;
+    MPI_Allreduce(&p.n, &ntotal, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+    check(ntotal == nparticles, "pull() sees all " + std::to_string(nparticles) +
+                                " particles (got " + std::to_string(ntotal) + ")");
+    std::set<long long> initial_ids(p.id.begin(), p.id.end());
+
+    double pushed_local = push(fix, p), pushed = 0.0;
+    MPI_Allreduce(&pushed_local, &pushed, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+
+    // ---- coupling cycles: push only every second cycle, the force must persist in between
+    char cmd[64];
+    for (int c = 0; c < ncycles; c++) {
+        std::snprintf(cmd, sizeof(cmd), c == 0 ? "run %d" : "run %d pre no post no",
+                      steps_per_cycle);
+        lmp->input->one(cmd);
+        if (c % 2 == 1 && c + 1 < ncycles) {
+            p = pull(fix);
+            push(fix, p);
+        }
+    }
+
+    // ---- checks
+    p = pull(fix);
+    const double t = ncycles * steps_per_cycle * dt;
+    const double zfall = z0 - 0.5 * g * t * t;
+    const double vfall = -g * t;
+    double err_float = 0.0, err_fall = 0.0, verr_float = 0.0, verr_fall = 0.0;
+    int nodd = 0, neven = 0, nmigrated = 0;
+    for (int i = 0; i < p.n; i++) {
+        const double z = p.x[3 * i + 2], vz = p.v[3 * i + 2];
+        if (p.id[i] % 2 == 1) {
+            nodd++;
+            err_float = std::fmax(err_float, std::fabs(z - z0));
+            verr_float = std::fmax(verr_float, std::fabs(vz));
+        } else {
+            neven++;
+            err_fall = std::fmax(err_fall, std::fabs(z - zfall));
+            verr_fall = std::fmax(verr_fall, std::fabs(vz - vfall));
+        }
+        if (!initial_ids.count(p.id[i])) nmigrated++;
+    }
+    double loc[4] = {err_float, err_fall, verr_float, verr_fall}, glob[4];
+    MPI_Allreduce(loc, glob, 4, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    int iloc[3] = {nodd, neven, nmigrated}, iglob[3];
+    MPI_Allreduce(iloc, iglob, 3, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+
+    char msg[256];
+    std::snprintf(msg, sizeof(msg),
+                  "%d particles with F = -m g float: max |dz| = %.3e m, max |vz| = %.3e m/s",
+                  iglob[0], glob[0], glob[2]);
+    check(iglob[0] > 0 && glob[0] < 1e-10 && glob[2] < 1e-8, msg);
+    std::snprintf(msg, sizeof(msg),
+                  "%d particles without force fall %.4f mm as g t^2/2: max error %.3e m, vz error %.3e m/s",
+                  iglob[1], (z0 - zfall) * 1e3, glob[1], glob[3]);
+    check(iglob[1] > 0 && glob[1] < 1e-9 && glob[3] < 1e-8, msg);
+
+    double tf[3], tf_all[3];
+    fix->total_force(tf);
+    MPI_Allreduce(tf, tf_all, 3, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    std::snprintf(msg, sizeof(msg), "sum of total_force() = %.6e N equals the pushed %.6e N",
+                  tf_all[2], pushed);
+    check(std::fabs(tf_all[2] - pushed) <= 1e-12 * std::fabs(pushed) && tf_all[0] == 0.0 &&
+              tf_all[1] == 0.0, msg);
+    const double fz_vec = fix->compute_vector(2);
+    std::snprintf(msg, sizeof(msg), "fix global vector f_cpl[3] = %.6e N equals it", fz_vec);
+    check(std::fabs(fz_vec - pushed) <= 1e-12 * std::fabs(pushed), msg);
+
+    if (nprocs > 1) {
+        std::snprintf(msg, sizeof(msg),
+                      "%d particles changed rank during the run (force followed them)", iglob[2]);
+        check(iglob[2] > 0, msg);
+    }
+
+    if (rank == 0) std::printf("liggghts_smoke (np=%d): %d passed, %d failed\n", nprocs, npass, nfail);
+    delete lmp;
+    MPI_Finalize();
+    return nfail == 0 ? 0 : 1;
+}
