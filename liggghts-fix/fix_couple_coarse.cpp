@@ -90,6 +90,12 @@ FixCoupleCoarse::FixCoupleCoarse(LAMMPS *lmp, int narg, char **arg) :
   restart_peratom = 1;
   create_attribute = 1;
 
+  // LIGGGHTS' Modify::setup() calls set_arrays() for every atom of a fix that is "just
+  // created" and has create_attribute, i.e. at the first run after this command. That would
+  // wipe forces pushed before the first run. The atoms existing now are zeroed below, so
+  // that first-setup pass is not needed (fix rigid does the same).
+  just_created = 0;
+
   grow_arrays(atom->nmax);
   atom->add_callback(0);  // grow/copy/exchange
   atom->add_callback(1);  // restart
