@@ -1,0 +1,190 @@
+/*
+ * coarse_dem.h -- the one public header of the coarse-particle coupling core (the "shim").
+ *
+ * Pure C11. No OpenFOAM, no LIGGGHTS. The OpenFOAM library, the solver and the LIGGGHTS fix
+ * include only this file.
+ *
+ * What the core does, per coupling step:
+ *   1. locate every particle's host cell (walk across faces from a hint cell, spatial-bin fallback);
+ *   2. build a KERNEL per particle: a sparse list of (cell, weight), weights >= 0 summing to 1.
+ *      The kernel is the single intermediate representation used for everything below;
+ *   3. from the kernels: particle volume fraction alpha_p per cell, per-cell force density from
+ *      per-particle forces, and volume-weighted background fields at each particle
+ *      (Zhang et al., Phys. Fluids 35, 113330 (2023), eqs. 21-22);
+ *   4. optional field operations: diffusion smoothing (ibid. eq. 7) and a conservative packing limiter.
+ *
+ * Conventions:
+ *   - every function returns a cdc_status; on error, cdc_last_error(ctx) gives a message naming the
+ *     entry or the particle, and the caller's output arrays are left untouched;
+ *   - the core never prints, never exits and has no global mutable state; all memory belongs to an
+ *     explicit object created and destroyed by the caller; internal buffers are reused across steps;
+ *   - mesh arrays are taken by pointer, never copied: they must outlive the context;
+ *   - indices are 32-bit (OpenFOAM label size), real numbers are double.
+ */
+#ifndef COARSE_DEM_H
+#define COARSE_DEM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define CDC_VERSION_STRING "0.1.0"
+
+typedef enum cdc_status {
+    CDC_OK = 0,
+    CDC_ERR_ARGUMENT,      /* a NULL pointer, a bad size, a parameter out of range */
+    CDC_ERR_NOMEM,         /* an allocation failed */
+    CDC_ERR_MESH,          /* the mesh is empty or inconsistent (e.g. a zero-volume cell) */
+    CDC_ERR_PARTICLE,      /* a particle has a NaN/infinite position or a radius <= 0 */
+    CDC_ERR_OUTSIDE,       /* particles lie outside the mesh (see cdc_kernels_outside) */
+    CDC_ERR_KERNEL,        /* a kernel would exceed the whole mesh or is otherwise impossible */
+    CDC_ERR_UNKNOWN,       /* unknown method name (message lists the valid ones) */
+    CDC_ERR_UNSUPPORTED,   /* method needs a mesh feature this mesh lacks (e.g. exact needs boxes) */
+    CDC_ERR_NOT_CONVERGED  /* an iterative solve did not reach its tolerance */
+} cdc_status;
+
+/* Kind of a boundary face, as the mesh adapter classifies OpenFOAM patches. */
+enum cdc_face_kind {
+    CDC_FACE_WALL = 0,      /* physical wall: wall-aware kernels mirror across it */
+    CDC_FACE_PROCESSOR = 1, /* processor boundary: the kernel continues on the neighbour rank */
+    CDC_FACE_OTHER = 2      /* inlet, outlet, symmetry, empty ...: treated as a domain edge */
+};
+
+/*
+ * A polyhedral mesh in OpenFOAM's face-addressed form. Faces 0..n_internal_faces-1 are internal
+ * (owner < neighbour not required); the rest are boundary faces, each with a kind.
+ * Face area vectors point out of the owner cell. Face i's points are
+ * face_points[face_point_offsets[i] .. face_point_offsets[i+1]-1].
+ */
+typedef struct cdc_mesh {
+    int32_t n_points;
+    int32_t n_cells;
+    int32_t n_faces;
+    int32_t n_internal_faces;
+    const double *points;             /* 3 * n_points */
+    const int32_t *face_point_offsets;/* n_faces + 1 */
+    const int32_t *face_points;       /* face_point_offsets[n_faces] */
+    const int32_t *owner;             /* n_faces */
+    const int32_t *neighbour;         /* n_internal_faces */
+    const double *face_centres;       /* 3 * n_faces */
+    const double *face_areas;         /* 3 * n_faces, area vectors out of the owner */
+    const double *cell_centres;       /* 3 * n_cells */
+    const double *cell_volumes;       /* n_cells */
+    const uint8_t *boundary_face_kind;/* n_faces - n_internal_faces, values of cdc_face_kind */
+} cdc_mesh;
+
+/* Particles as the DEM hands them over (structure of arrays, borrowed for the call). */
+typedef struct cdc_particles {
+    int32_t n;
+    const double *position;   /* 3 * n */
+    const double *radius;     /* n */
+    const int64_t *id;        /* n, DEM ids used in messages; may be NULL (then index is used) */
+    int32_t *host_hint;       /* n, in: last host cell or -1; out: host cell or -1 if outside.
+                                 May be NULL (no hint, located from scratch every call). */
+} cdc_particles;
+
+/* Void-fraction kernel parameters. Zero-initialise, set what the method needs. */
+typedef struct cdc_kernel_params {
+    double expansion_factor;  /* bigParticle: n >= 1 (0 = original equal split over overlapped cells) */
+    double search_factor;     /* twoGrid: search radius / R (default 3 when 0) */
+    double bandwidth;         /* gaussian: b > 0 in metres, kernel exp(-r^2/b^2) (seed eq. 6) */
+    double cutoff_factor;     /* gaussian: truncation radius / b (default 2 when 0) */
+    int wall_mirror;          /* 1: expansion kernels mirror across wall faces (no wall over-concentration) */
+} cdc_kernel_params;
+
+typedef struct cdc_context cdc_context;
+typedef struct cdc_kernels cdc_kernels;
+
+/* ------------------------------------------------------------------ context and mesh */
+
+/* Create a context for one mesh (one MPI rank's part). Checks the mesh (non-empty, positive cell
+ * volumes, consistent addressing) and builds cell-face and cell-cell adjacency and spatial bins. */
+cdc_status cdc_context_create(const cdc_mesh *mesh, cdc_context **out);
+void cdc_context_destroy(cdc_context *ctx);
+/* Message of the last error on this context (or of cdc_context_create when ctx is NULL). */
+const char *cdc_last_error(const cdc_context *ctx);
+/* Message of the last cdc_context_create failure, for the caller that got no context back. */
+const char *cdc_create_error(void);
+const cdc_mesh *cdc_context_mesh(const cdc_context *ctx);
+
+/* Host cell of one point: walk from hint (or -1), spatial-bin fallback. *cell = -1 if outside. */
+cdc_status cdc_locate_point(cdc_context *ctx, const double p[3], int32_t hint, int32_t *cell);
+
+/* ------------------------------------------------------------------ methods */
+
+/* Number of registered kernel methods and their names ("centre", "divided", ...). */
+int cdc_method_count(void);
+const char *cdc_method_name(int i);
+/* Comma-separated list of method names, for error messages. */
+const char *cdc_method_list(void);
+
+/* ------------------------------------------------------------------ kernels */
+
+cdc_status cdc_kernels_create(cdc_context *ctx, const char *method, const cdc_kernel_params *params,
+                              cdc_kernels **out);
+void cdc_kernels_destroy(cdc_kernels *k);
+
+/* Build the kernels of all particles. Particles outside the mesh get an empty kernel; they are
+ * counted and listed (cdc_kernels_outside) and the call returns CDC_ERR_OUTSIDE after building all
+ * others, so the caller decides whether that is fatal. Invalid particles (NaN, radius <= 0) stop the
+ * call with CDC_ERR_PARTICLE before anything is written. */
+cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p);
+
+/* CSR view of the kernels of the last build: particle i has entries offsets[i]..offsets[i+1]-1. */
+int32_t cdc_kernels_count(const cdc_kernels *k);
+const int32_t *cdc_kernels_offsets(const cdc_kernels *k);
+const int32_t *cdc_kernels_cells(const cdc_kernels *k);
+const double *cdc_kernels_weights(const cdc_kernels *k);
+/* Particles found outside the mesh in the last build: count and their ids. */
+int32_t cdc_kernels_outside(const cdc_kernels *k, const int64_t **ids);
+
+/* alpha_p[c] = sum_i V_i w_ic / V_c with V_i = 4/3 pi r_i^3 (n_cells outputs, overwritten). */
+cdc_status cdc_alpha_p(const cdc_kernels *k, const cdc_particles *p, double *alpha_p);
+/* Per-particle quantity q_i (ncomp components) spread to cells as density: out[c] = sum_i q_i w_ic / V_c. */
+cdc_status cdc_spread(const cdc_kernels *k, const double *q, int ncomp, double *out);
+/* Background field at each particle: out_i = sum_c w_ic f_c, the adjoint of cdc_spread (so the
+ * momentum a particle gets back equals what it gave). For kernels uniform in volume fraction
+ * (w_c = V_c / sum V_c, e.g. bigParticle n = 5) this is eqs. 21-22. Particles outside get 0. */
+cdc_status cdc_gather(const cdc_kernels *k, const double *field, int ncomp, double *out);
+
+/* ------------------------------------------------------------------ field operations */
+
+/* Diffusion smoothing of a cell field (seed eq. 7): d(phi)/dtau = div(D grad phi), zero flux at every
+ * boundary, implicit Euler in pseudo-time to T = b^2/4 in n_steps steps. Conserves sum(phi V) to
+ * round-off whatever the linear solver tolerance (flux-form update). D is 1 everywhere, or with
+ * d_rule the seed's rule D = 0.001 in cells larger than 4 d (d = particle diameter). */
+typedef struct cdc_diffusion_params {
+    double bandwidth;         /* b > 0 (metres) */
+    int n_steps;              /* pseudo-time steps (default 4 when 0) */
+    double tolerance;         /* relative CG tolerance (default 1e-10 when 0) */
+    int max_iterations;       /* default 1000 when 0 */
+    int d_rule;               /* 1: D = 0.001 where cell size > 4 d */
+    double particle_diameter; /* d for d_rule */
+} cdc_diffusion_params;
+
+cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double *phi);
+
+/* Size-aware diffusion for polydisperse beds: particles are grouped in diameter classes (width
+ * class_ratio, e.g. 1.1 = 10 %), each class's PCM field is smoothed with its own bandwidth
+ * b_k = bandwidth_over_d * d_k and the classes are summed. Writes alpha_p. */
+cdc_status cdc_alpha_p_diffused_by_size(cdc_context *ctx, const cdc_kernels *k, const cdc_particles *p,
+                                        double bandwidth_over_d, double class_ratio,
+                                        const cdc_diffusion_params *base, double *alpha_p,
+                                        int *n_classes);
+
+/* Packing limiter: where alpha_p exceeds alpha_max, the excess volume moves to face neighbours
+ * (volume conserved exactly) until no cell exceeds alpha_max or max_sweeps is reached.
+ * Reports the total moved volume (m^3) and the number of cells that were over the limit. */
+cdc_status cdc_limit_packing(cdc_context *ctx, double alpha_max, int max_sweeps, double *alpha_p,
+                             double *moved_volume, int32_t *n_limited_cells);
+
+/* Exact volume of the intersection of a sphere and an axis-aligned box (to ~1e-12 relative). */
+double cdc_sphere_box_volume(const double centre[3], double radius, const double lo[3], const double hi[3]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

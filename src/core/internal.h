@@ -1,0 +1,131 @@
+/*
+ * internal.h -- private structures of the core, shared by its source files. Not installed.
+ */
+#ifndef CDC_INTERNAL_H
+#define CDC_INTERNAL_H
+
+#include "coarse_dem.h"
+
+#include <stdarg.h>
+
+#define CDC_MSG_LEN 1024
+#define CDC_PI 3.14159265358979323846
+
+/* A growable array of int32 or double, reused across steps (capacity only grows). */
+typedef struct { int32_t *v; size_t n, cap; } cdc_ivec;
+typedef struct { double *v; size_t n, cap; } cdc_dvec;
+
+int cdc_ivec_push(cdc_ivec *a, int32_t x);
+int cdc_dvec_push(cdc_dvec *a, double x);
+int cdc_ivec_reserve(cdc_ivec *a, size_t cap);
+int cdc_dvec_reserve(cdc_dvec *a, size_t cap);
+void cdc_ivec_free(cdc_ivec *a);
+void cdc_dvec_free(cdc_dvec *a);
+
+/* A wall plane near a particle: points x with dot(x - origin, normal) = 0; normal points out. */
+typedef struct { double origin[3]; double normal[3]; } cdc_plane;
+#define CDC_MAX_PLANES 3
+#define CDC_N_SCRATCH 7
+/* Relative slack on "within radius" tests: on regular lattices cell centres sit exactly on a
+ * kernel's radius, and round-off must not decide (asymmetrically) whether they are in. */
+#define CDC_RADIUS_SLACK (1.0 + 1e-10)
+
+struct cdc_context {
+    const cdc_mesh *mesh;
+    char msg[CDC_MSG_LEN];
+
+    /* cell -> faces (CSR), built once */
+    int32_t *cell_face_offsets;
+    int32_t *cell_faces;
+    /* cell -> neighbouring cells across internal faces (CSR), built once */
+    int32_t *cell_cell_offsets;
+    int32_t *cell_cells;
+    /* per cell: axis-aligned bounding box (lo xyz, hi xyz) and whether the cell IS that box */
+    double *cell_bbox;
+    uint8_t *cell_is_box;
+    uint8_t *cell_has_wall;  /* cell owns at least one wall face */
+    double mesh_lo[3], mesh_hi[3];
+    double total_volume;
+
+    /* spatial bins for the location fallback, built on first need */
+    int bins_built;
+    int32_t nbin[3];
+    double bin_lo[3], bin_size[3];
+    int32_t *bin_offsets;
+    int32_t *bin_cells;
+
+    /* scratch for neighbourhood searches: visit stamps avoid clearing a n_cells array per particle */
+    int32_t *stamp;
+    int32_t stamp_now;
+    cdc_ivec queue;
+    cdc_ivec near_cells;   /* method scratch: the cells of one neighbourhood */
+
+    /* field operations: geometric face coefficients |S_f|/|d_f| of internal faces (lazy) and
+     * scratch vectors reused across calls */
+    double *face_coeff;
+    cdc_dvec scratch[CDC_N_SCRATCH];
+    cdc_dvec class_q, class_field, class_sum; /* size-aware smoothing */
+};
+
+/* Set the context's message (printf style); returns status for one-line error returns. */
+cdc_status cdc_fail(cdc_context *ctx, cdc_status st, const char *fmt, ...);
+
+/* Is p inside convex cell c (with a tolerance relative to the cell size)? */
+int cdc_point_in_cell(const cdc_context *ctx, int32_t c, const double p[3]);
+
+/* New visit generation for the stamp array (wraps safely). */
+int32_t cdc_next_stamp(cdc_context *ctx);
+
+/* One particle's kernel under construction: the method appends (cell, raw weight >= 0);
+ * the driver normalises the raw weights to sum 1. */
+typedef struct cdc_kernel_builder {
+    cdc_ivec *cells;
+    cdc_dvec *weights;
+} cdc_kernel_builder;
+
+int cdc_kernel_add(cdc_kernel_builder *b, int32_t cell, double w);
+
+/* What a method gets for one particle. */
+typedef struct cdc_particle_in {
+    double x[3];
+    double r;
+    int32_t host;   /* host cell of the centre (>= 0) */
+} cdc_particle_in;
+
+/*
+ * One kernel method = one file = one of these, registered in methods.c.
+ * check():  validate parameters; return CDC_ERR_ARGUMENT with a message naming the parameter.
+ * reach():  radius beyond which the kernel of a particle of radius r never reaches (for the
+ *           "kernel bigger than the mesh" check).
+ * build():  append raw weights of one particle.
+ */
+typedef struct cdc_method {
+    const char *name;
+    cdc_status (*check)(cdc_context *ctx, const cdc_kernel_params *prm);
+    double (*reach)(const cdc_kernel_params *prm, double r);
+    cdc_status (*build)(cdc_context *ctx, const cdc_kernel_params *prm, const cdc_particle_in *p,
+                        cdc_kernel_builder *out);
+} cdc_method;
+
+const cdc_method *cdc_find_method(const char *name);
+
+/* Cells whose centre lies within `radius` of x, found by flood fill from the host cell across
+ * faces (the host is always included). When planes != NULL, wall faces of visited cells closer
+ * than `radius` to x are collected as mirror planes (deduplicated, at most CDC_MAX_PLANES). */
+cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t host, double radius,
+                            cdc_ivec *cells, cdc_plane *planes, int *n_planes);
+
+/* Cells whose bounding box overlaps the sphere (x, radius), by flood fill from the host. */
+cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t host, double radius,
+                                 cdc_ivec *cells);
+
+/* Images of x across the planes (x itself first, then single, double, triple reflections). */
+int cdc_mirror_images(const double x[3], const cdc_plane *planes, int n_planes, double images[][3]);
+
+static inline double cdc_dist2(const double a[3], const double b[3])
+{
+    const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+    return dx * dx + dy * dy + dz * dz;
+}
+
+#endif

@@ -1,0 +1,259 @@
+/*
+ * kernels.c -- the driver: locate particles, let the selected method append raw weights, merge
+ * duplicate cells, normalise to sum 1, and use the kernels (alpha_p, spreading, gathering).
+ */
+#include "internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct cdc_kernels {
+    cdc_context *ctx;
+    const cdc_method *method;
+    cdc_kernel_params prm;
+    int32_t n;                 /* particles of the last build */
+    cdc_ivec offsets, cells;   /* CSR result */
+    cdc_dvec weights;
+    cdc_ivec raw_cells;        /* one particle's raw entries, before merging */
+    cdc_dvec raw_weights;
+    int32_t *slot;             /* cell -> position in the current particle's merged list */
+    int32_t *slot_stamp;
+    int32_t slot_now;
+    int64_t *outside_ids;      /* ids of the particles outside the mesh in the last build */
+    int32_t n_outside;
+    size_t outside_cap;
+};
+
+int cdc_kernel_add(cdc_kernel_builder *b, int32_t cell, double w)
+{
+    if (cdc_ivec_push(b->cells, cell)) return -1;
+    if (cdc_dvec_push(b->weights, w)) return -1;
+    return 0;
+}
+
+cdc_status cdc_kernels_create(cdc_context *ctx, const char *method, const cdc_kernel_params *params,
+                              cdc_kernels **out)
+{
+    if (!ctx || !out) return cdc_fail(ctx, CDC_ERR_ARGUMENT, "cdc_kernels_create: NULL argument");
+    const cdc_method *m = cdc_find_method(method);
+    if (!m)
+        return cdc_fail(ctx, CDC_ERR_UNKNOWN, "unknown void fraction method '%s'; valid methods are: %s",
+                        method ? method : "(null)", cdc_method_list());
+    cdc_kernel_params prm;
+    memset(&prm, 0, sizeof prm);
+    if (params) prm = *params;
+    cdc_status st = m->check(ctx, &prm);
+    if (st != CDC_OK) return st;
+
+    cdc_kernels *k = calloc(1, sizeof *k);
+    if (!k) return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory creating kernels");
+    k->ctx = ctx;
+    k->method = m;
+    k->prm = prm;
+    k->slot = malloc((size_t)ctx->mesh->n_cells * sizeof(int32_t));
+    k->slot_stamp = calloc((size_t)ctx->mesh->n_cells, sizeof(int32_t));
+    if (!k->slot || !k->slot_stamp || cdc_ivec_push(&k->offsets, 0)) {
+        cdc_kernels_destroy(k);
+        return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory creating kernels");
+    }
+    *out = k;
+    return CDC_OK;
+}
+
+void cdc_kernels_destroy(cdc_kernels *k)
+{
+    if (!k) return;
+    cdc_ivec_free(&k->offsets);
+    cdc_ivec_free(&k->cells);
+    cdc_dvec_free(&k->weights);
+    cdc_ivec_free(&k->raw_cells);
+    cdc_dvec_free(&k->raw_weights);
+    free(k->slot);
+    free(k->slot_stamp);
+    free(k->outside_ids);
+    free(k);
+}
+
+static int64_t particle_id(const cdc_particles *p, int32_t i) { return p->id ? p->id[i] : (int64_t)i; }
+
+/* Everything that can be said about the input before touching any output. */
+static cdc_status check_particles(cdc_kernels *k, const cdc_particles *p)
+{
+    cdc_context *ctx = k->ctx;
+    if (!p || p->n < 0 || (p->n > 0 && (!p->position || !p->radius)))
+        return cdc_fail(ctx, CDC_ERR_ARGUMENT, "particles: NULL array or negative count");
+    const double *lo = ctx->mesh_lo, *hi = ctx->mesh_hi;
+    const double diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                             (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    for (int32_t i = 0; i < p->n; ++i) {
+        const double *x = p->position + 3 * (size_t)i;
+        const double r = p->radius[i];
+        if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2]))
+            return cdc_fail(ctx, CDC_ERR_PARTICLE, "particle %lld: position (%g %g %g) is not finite",
+                            (long long)particle_id(p, i), x[0], x[1], x[2]);
+        if (!(r > 0.0) || !isfinite(r))
+            return cdc_fail(ctx, CDC_ERR_PARTICLE, "particle %lld: radius %g is invalid (must be > 0)",
+                            (long long)particle_id(p, i), r);
+        const double reach = k->method->reach(&k->prm, r);
+        if (reach > diag)
+            return cdc_fail(ctx, CDC_ERR_KERNEL,
+                            "particle %lld: the %s kernel reaches %g m, more than the whole mesh (diagonal "
+                            "%g m); reduce the expansion factor or bandwidth",
+                            (long long)particle_id(p, i), k->method->name, reach, diag);
+    }
+    return CDC_OK;
+}
+
+/* Merge the raw entries of one particle (same cell twice -> one entry) and normalise to sum 1. */
+static cdc_status append_normalised(cdc_kernels *k, int64_t id)
+{
+    const int32_t s = ++k->slot_now;
+    const size_t start = k->cells.n;
+    double sum = 0.0;
+    for (size_t q = 0; q < k->raw_cells.n; ++q) {
+        const int32_t c = k->raw_cells.v[q];
+        const double w = k->raw_weights.v[q];
+        sum += w;
+        if (k->slot_stamp[c] == s) {
+            k->weights.v[k->slot[c]] += w;
+            continue;
+        }
+        k->slot_stamp[c] = s;
+        k->slot[c] = (int32_t)k->cells.n;
+        if (cdc_ivec_push(&k->cells, c) || cdc_dvec_push(&k->weights, w))
+            return cdc_fail(k->ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
+    }
+    if (!(sum > 0.0) || !isfinite(sum))
+        return cdc_fail(k->ctx, CDC_ERR_KERNEL, "particle %lld: %s kernel has no positive weight",
+                        (long long)id, k->method->name);
+    const double inv = 1.0 / sum;
+    for (size_t q = start; q < k->cells.n; ++q) k->weights.v[q] *= inv;
+    return CDC_OK;
+}
+
+static cdc_status record_outside(cdc_kernels *k, int64_t id)
+{
+    if ((size_t)k->n_outside == k->outside_cap) {
+        const size_t cap = k->outside_cap ? 2 * k->outside_cap : 16;
+        int64_t *v = realloc(k->outside_ids, cap * sizeof *v);
+        if (!v) return cdc_fail(k->ctx, CDC_ERR_NOMEM, "out of memory listing particles outside");
+        k->outside_ids = v;
+        k->outside_cap = cap;
+    }
+    k->outside_ids[k->n_outside++] = id;
+    return CDC_OK;
+}
+
+cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
+{
+    if (!k) return CDC_ERR_ARGUMENT;
+    cdc_status st = check_particles(k, p);
+    if (st != CDC_OK) return st;
+    cdc_context *ctx = k->ctx;
+
+    k->n = p->n;
+    k->offsets.n = 1;
+    k->cells.n = 0;
+    k->weights.n = 0;
+    k->n_outside = 0;
+    if (cdc_ivec_reserve(&k->offsets, (size_t)p->n + 1))
+        return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
+    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights};
+
+    for (int32_t i = 0; i < p->n; ++i) {
+        cdc_particle_in in = {{p->position[3 * (size_t)i], p->position[3 * (size_t)i + 1],
+                               p->position[3 * (size_t)i + 2]},
+                              p->radius[i], -1};
+        const int32_t hint = p->host_hint ? p->host_hint[i] : -1;
+        st = cdc_locate_point(ctx, in.x, hint, &in.host);
+        if (st != CDC_OK) return st;
+        if (p->host_hint) p->host_hint[i] = in.host;
+        if (in.host < 0) {
+            st = record_outside(k, particle_id(p, i));
+            if (st != CDC_OK) return st;
+        } else {
+            k->raw_cells.n = 0;
+            k->raw_weights.n = 0;
+            st = k->method->build(ctx, &k->prm, &in, &b);
+            if (st == CDC_OK) st = append_normalised(k, particle_id(p, i));
+            if (st != CDC_OK) return st;
+        }
+        k->offsets.v[k->offsets.n++] = (int32_t)k->cells.n;
+    }
+    if (k->n_outside > 0) {
+        char list[256] = "";
+        size_t used = 0;
+        for (int32_t j = 0; j < k->n_outside && j < 10 && used < sizeof list - 24; ++j)
+            used += (size_t)snprintf(list + used, sizeof list - used, "%s%lld", j ? " " : "",
+                                     (long long)k->outside_ids[j]);
+        return cdc_fail(ctx, CDC_ERR_OUTSIDE, "%d particle(s) outside the mesh, ids: %s%s", (int)k->n_outside,
+                        list, k->n_outside > 10 ? " ..." : "");
+    }
+    return CDC_OK;
+}
+
+int32_t cdc_kernels_count(const cdc_kernels *k) { return k ? k->n : 0; }
+const int32_t *cdc_kernels_offsets(const cdc_kernels *k) { return k ? k->offsets.v : NULL; }
+const int32_t *cdc_kernels_cells(const cdc_kernels *k) { return k ? k->cells.v : NULL; }
+const double *cdc_kernels_weights(const cdc_kernels *k) { return k ? k->weights.v : NULL; }
+
+int32_t cdc_kernels_outside(const cdc_kernels *k, const int64_t **ids)
+{
+    if (ids) *ids = k ? k->outside_ids : NULL;
+    return k ? k->n_outside : 0;
+}
+
+cdc_status cdc_spread(const cdc_kernels *k, const double *q, int ncomp, double *out)
+{
+    if (!k || !q || !out || ncomp <= 0)
+        return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT, "cdc_spread: NULL argument or ncomp <= 0");
+    const cdc_mesh *m = k->ctx->mesh;
+    memset(out, 0, (size_t)m->n_cells * (size_t)ncomp * sizeof *out);
+    const int32_t *off = k->offsets.v;
+    for (int32_t i = 0; i < k->n; ++i)
+        for (int32_t e = off[i]; e < off[i + 1]; ++e) {
+            const int32_t c = k->cells.v[e];
+            const double w = k->weights.v[e];
+            for (int d = 0; d < ncomp; ++d) out[(size_t)c * ncomp + d] += w * q[(size_t)i * ncomp + d];
+        }
+    for (int32_t c = 0; c < m->n_cells; ++c) {
+        const double inv = 1.0 / m->cell_volumes[c];
+        for (int d = 0; d < ncomp; ++d) out[(size_t)c * ncomp + d] *= inv;
+    }
+    return CDC_OK;
+}
+
+cdc_status cdc_alpha_p(const cdc_kernels *k, const cdc_particles *p, double *alpha_p)
+{
+    if (!k || !p || !alpha_p || p->n != k->n)
+        return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT,
+                        "cdc_alpha_p: NULL argument or particle count differs from the last build");
+    /* Spread particle volumes; reuse raw_weights as the per-particle volume buffer. */
+    cdc_kernels *mk = (cdc_kernels *)k;
+    if (cdc_dvec_reserve(&mk->raw_weights, (size_t)p->n + 1))
+        return cdc_fail(k->ctx, CDC_ERR_NOMEM, "out of memory in cdc_alpha_p");
+    for (int32_t i = 0; i < p->n; ++i)
+        mk->raw_weights.v[i] = 4.0 / 3.0 * CDC_PI * p->radius[i] * p->radius[i] * p->radius[i];
+    return cdc_spread(k, mk->raw_weights.v, 1, alpha_p);
+}
+
+cdc_status cdc_gather(const cdc_kernels *k, const double *field, int ncomp, double *out)
+{
+    if (!k || !field || !out || ncomp <= 0)
+        return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT, "cdc_gather: NULL argument or ncomp <= 0");
+    /* The adjoint of cdc_spread: what a particle sees is the kernel-weighted mean of the field.
+     * For kernels uniform in volume fraction (w_c = V_c / sum V_c) this is eqs. 21-22. */
+    const int32_t *off = k->offsets.v;
+    for (int32_t i = 0; i < k->n; ++i) {
+        double *o = out + (size_t)i * ncomp;
+        for (int d = 0; d < ncomp; ++d) o[d] = 0.0;
+        for (int32_t e = off[i]; e < off[i + 1]; ++e) {
+            const int32_t c = k->cells.v[e];
+            const double w = k->weights.v[e];
+            for (int d = 0; d < ncomp; ++d) o[d] += w * field[(size_t)c * ncomp + d];
+        }
+    }
+    return CDC_OK;
+}

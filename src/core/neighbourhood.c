@@ -1,0 +1,124 @@
+/*
+ * neighbourhood.c -- the cells around a particle, by flood fill across faces from its host cell
+ * (the cell-topology search of Zhang et al. 2023 §II.B, the "linked-list search" of §II.E),
+ * and the wall planes the wall-aware kernels mirror across.
+ */
+#include "internal.h"
+
+#include <math.h>
+
+typedef int (*accept_fn)(const cdc_context *ctx, int32_t c, const double x[3], double radius);
+
+static int centre_within(const cdc_context *ctx, int32_t c, const double x[3], double radius)
+{
+    return cdc_dist2(ctx->mesh->cell_centres + 3 * (size_t)c, x) <= radius * radius * CDC_RADIUS_SLACK;
+}
+
+static int box_overlaps(const cdc_context *ctx, int32_t c, const double x[3], double radius)
+{
+    const double *bb = ctx->cell_bbox + 6 * (size_t)c;
+    double d2 = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        const double e = x[d] < bb[d] ? bb[d] - x[d] : (x[d] > bb[3 + d] ? x[d] - bb[3 + d] : 0.0);
+        d2 += e * e;
+    }
+    return d2 < radius * radius;
+}
+
+/* Add the plane of wall face f if it is within `radius` of x and not yet known. */
+static void collect_plane(const cdc_mesh *m, int32_t f, const double x[3], double radius,
+                          cdc_plane *planes, int *n_planes)
+{
+    const double *S = m->face_areas + 3 * (size_t)f, *C = m->face_centres + 3 * (size_t)f;
+    const double mag = sqrt(S[0] * S[0] + S[1] * S[1] + S[2] * S[2]);
+    const double n[3] = {S[0] / mag, S[1] / mag, S[2] / mag};
+    const double dist = (C[0] - x[0]) * n[0] + (C[1] - x[1]) * n[1] + (C[2] - x[2]) * n[2];
+    if (dist >= radius) return;
+    for (int k = 0; k < *n_planes; ++k) {
+        const cdc_plane *q = planes + k;
+        const double dn = n[0] * q->normal[0] + n[1] * q->normal[1] + n[2] * q->normal[2];
+        const double off = (C[0] - q->origin[0]) * q->normal[0] + (C[1] - q->origin[1]) * q->normal[1] +
+                           (C[2] - q->origin[2]) * q->normal[2];
+        if (dn > 1.0 - 1e-9 && fabs(off) <= 1e-9 * radius) return; /* same plane */
+    }
+    if (*n_planes >= CDC_MAX_PLANES) return;
+    cdc_plane *p = planes + (*n_planes)++;
+    for (int d = 0; d < 3; ++d) {
+        p->origin[d] = C[d];
+        p->normal[d] = n[d];
+    }
+}
+
+static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, double radius, accept_fn accept,
+                        cdc_ivec *cells, cdc_plane *planes, int *n_planes)
+{
+    const cdc_mesh *m = ctx->mesh;
+    const int32_t s = cdc_next_stamp(ctx);
+    cells->n = 0;
+    if (n_planes) *n_planes = 0;
+    ctx->queue.n = 0;
+    if (cdc_ivec_push(&ctx->queue, host)) return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory in cell search");
+    ctx->stamp[host] = s;
+    for (size_t head = 0; head < ctx->queue.n; ++head) {
+        const int32_t c = ctx->queue.v[head];
+        if (c != host && !accept(ctx, c, x, radius)) continue;
+        if (cdc_ivec_push(cells, c)) return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory in cell search");
+        if (planes && ctx->cell_has_wall[c])
+            for (int32_t q = ctx->cell_face_offsets[c]; q < ctx->cell_face_offsets[c + 1]; ++q) {
+                const int32_t f = ctx->cell_faces[q];
+                if (f >= m->n_internal_faces &&
+                    m->boundary_face_kind[f - m->n_internal_faces] == CDC_FACE_WALL)
+                    collect_plane(m, f, x, radius, planes, n_planes);
+            }
+        for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
+            const int32_t nb = ctx->cell_cells[q];
+            if (ctx->stamp[nb] == s) continue;
+            ctx->stamp[nb] = s;
+            if (cdc_ivec_push(&ctx->queue, nb))
+                return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory in cell search");
+        }
+    }
+    return CDC_OK;
+}
+
+cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t host, double radius,
+                            cdc_ivec *cells, cdc_plane *planes, int *n_planes)
+{
+    return flood(ctx, x, host, radius, centre_within, cells, planes, n_planes);
+}
+
+cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t host, double radius,
+                                 cdc_ivec *cells)
+{
+    return flood(ctx, x, host, radius, box_overlaps, cells, NULL, NULL);
+}
+
+static void reflect(const double x[3], const cdc_plane *p, double out[3])
+{
+    const double s = (x[0] - p->origin[0]) * p->normal[0] + (x[1] - p->origin[1]) * p->normal[1] +
+                     (x[2] - p->origin[2]) * p->normal[2];
+    for (int d = 0; d < 3; ++d) out[d] = x[d] - 2.0 * s * p->normal[d];
+}
+
+int cdc_mirror_images(const double x[3], const cdc_plane *planes, int n_planes, double images[][3])
+{
+    /* Every subset of the planes, reflected in order: for perpendicular walls (corners of box
+     * meshes) this is the exact method of images of a reflecting boundary. */
+    int n = 0;
+    for (int mask = 0; mask < (1 << n_planes); ++mask) {
+        double y[3] = {x[0], x[1], x[2]};
+        for (int k = 0; k < n_planes; ++k)
+            if (mask & (1 << k)) {
+                double z[3];
+                reflect(y, planes + k, z);
+                y[0] = z[0];
+                y[1] = z[1];
+                y[2] = z[2];
+            }
+        images[n][0] = y[0];
+        images[n][1] = y[1];
+        images[n][2] = y[2];
+        ++n;
+    }
+    return n;
+}
