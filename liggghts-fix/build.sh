@@ -68,6 +68,7 @@ else
     tarball="$(ls "$cache"/debsrc/liggghts_*.orig.tar.* 2>/dev/null | head -n1 || true)"
     if [ -z "$tarball" ]; then
         say "fetching Debian's liggghts source package into $cache/debsrc"
+        say "(a '404 Not Found' for liggghts_*.debian.tar.xz is expected: only the orig tarball is used)"
         # The Debian patch tarball of liggghts 3.8.0+repack1-9 is missing on the mirror, so
         # apt-get source fails after fetching the orig tarball: judge by the tarball instead.
         (cd "$cache/debsrc" && apt-get source --download-only liggghts) || true
