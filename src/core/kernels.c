@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 struct cdc_kernels {
     cdc_context *ctx;
@@ -21,6 +22,8 @@ struct cdc_kernels {
     int32_t *slot;             /* cell -> position in the current particle's merged list */
     int32_t *slot_stamp;
     int32_t slot_now;
+    cdc_ivec hosts;            /* host cell of each particle in the last build */
+    double seconds_locate, seconds_kernel; /* wall time of the last build's two passes */
     int64_t *outside_ids;      /* ids of the particles outside the mesh in the last build */
     int32_t n_outside;
     size_t outside_cap;
@@ -68,6 +71,7 @@ void cdc_kernels_destroy(cdc_kernels *k)
     cdc_ivec_free(&k->offsets);
     cdc_ivec_free(&k->cells);
     cdc_dvec_free(&k->weights);
+    cdc_ivec_free(&k->hosts);
     cdc_ivec_free(&k->raw_cells);
     cdc_dvec_free(&k->raw_weights);
     free(k->slot);
@@ -146,6 +150,13 @@ static cdc_status record_outside(cdc_kernels *k, int64_t id)
     return CDC_OK;
 }
 
+static double now_seconds(void)
+{
+    struct timespec ts;
+    timespec_get(&ts, TIME_UTC);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
 {
     if (!k) return CDC_ERR_ARGUMENT;
@@ -158,18 +169,25 @@ cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
     k->cells.n = 0;
     k->weights.n = 0;
     k->n_outside = 0;
-    if (cdc_ivec_reserve(&k->offsets, (size_t)p->n + 1))
+    if (cdc_ivec_reserve(&k->offsets, (size_t)p->n + 1) || cdc_ivec_reserve(&k->hosts, (size_t)p->n + 1))
         return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
-    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights};
 
+    /* pass 1: host cells (timed apart from the kernels, for the solver's stage timers) */
+    const double t0 = now_seconds();
+    for (int32_t i = 0; i < p->n; ++i) {
+        const int32_t hint = p->host_hint ? p->host_hint[i] : -1;
+        st = cdc_locate_point(ctx, p->position + 3 * (size_t)i, hint, &k->hosts.v[i]);
+        if (st != CDC_OK) return st;
+        if (p->host_hint) p->host_hint[i] = k->hosts.v[i];
+    }
+    const double t1 = now_seconds();
+
+    /* pass 2: kernels */
+    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights};
     for (int32_t i = 0; i < p->n; ++i) {
         cdc_particle_in in = {{p->position[3 * (size_t)i], p->position[3 * (size_t)i + 1],
                                p->position[3 * (size_t)i + 2]},
-                              p->radius[i], -1};
-        const int32_t hint = p->host_hint ? p->host_hint[i] : -1;
-        st = cdc_locate_point(ctx, in.x, hint, &in.host);
-        if (st != CDC_OK) return st;
-        if (p->host_hint) p->host_hint[i] = in.host;
+                              p->radius[i], k->hosts.v[i]};
         if (in.host < 0) {
             st = record_outside(k, particle_id(p, i));
             if (st != CDC_OK) return st;
@@ -182,6 +200,8 @@ cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
         }
         k->offsets.v[k->offsets.n++] = (int32_t)k->cells.n;
     }
+    k->seconds_locate = t1 - t0;
+    k->seconds_kernel = now_seconds() - t1;
     if (k->n_outside > 0) {
         char list[256] = "";
         size_t used = 0;
@@ -195,6 +215,12 @@ cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
 }
 
 int32_t cdc_kernels_count(const cdc_kernels *k) { return k ? k->n : 0; }
+
+void cdc_kernels_timing(const cdc_kernels *k, double *seconds_locate, double *seconds_kernel)
+{
+    if (seconds_locate) *seconds_locate = k ? k->seconds_locate : 0.0;
+    if (seconds_kernel) *seconds_kernel = k ? k->seconds_kernel : 0.0;
+}
 const int32_t *cdc_kernels_offsets(const cdc_kernels *k) { return k ? k->offsets.v : NULL; }
 const int32_t *cdc_kernels_cells(const cdc_kernels *k) { return k ? k->cells.v : NULL; }
 const double *cdc_kernels_weights(const cdc_kernels *k) { return k ? k->weights.v : NULL; }
