@@ -1,0 +1,332 @@
+#include "coarseDemCoupling.H"
+#include "fvc.H"
+#include "mathematicalConstants.H"
+
+#include <cmath>
+
+namespace Foam
+{
+
+static IOobject couplingDictIO(const fvMesh& mesh)
+{
+    return IOobject("couplingProperties", mesh.time().constant(), mesh, IOobject::MUST_READ, IOobject::NO_WRITE);
+}
+
+coarseDemCoupling::coarseDemCoupling
+(
+    const fvMesh& mesh, const dimensionedScalar& rho, const dimensionedScalar& nu, const dimensionedVector& g
+)
+:
+    mesh_(mesh),
+    dict_(couplingDictIO(mesh)),
+    modelB_(false),
+    couplingInterval_(dict_.get<label>("couplingInterval")),
+    implicitDrag_(dict_.lookupOrDefault<Switch>("implicitDrag", true)),
+    cgFactor_(dict_.lookupOrDefault<scalar>("coarseGrainingFactor", 1)),
+    fluid_{rho.value(), nu.value(), g.value()},
+    demMesh_(mesh),
+    voidFraction_(dict_, demMesh_),
+    backgroundKernels_(nullptr),
+    needs_(0),
+    solidVolumeParticles_(0), solidVolumeCells_(0), momentumImbalance_(0), forceScale_(0),
+    nParticles_(0),
+    alphaP
+    (
+        IOobject("alphaP", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
+        mesh, dimensionedScalar(dimless, Zero)
+    ),
+    Ksl
+    (
+        IOobject("Ksl", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::NO_WRITE),
+        mesh, dimensionedScalar(dimless/dimTime, Zero)
+    ),
+    KslUs
+    (
+        IOobject("KslUs", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::NO_WRITE),
+        mesh, dimensionedVector(dimAcceleration, Zero)
+    ),
+    fFluid
+    (
+        IOobject("fFluid", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
+        mesh, dimensionedVector(dimAcceleration, Zero)
+    )
+{
+    const word modelType = dict_.get<word>("modelType");
+    if (modelType != "A" && modelType != "B")
+    {
+        FatalIOErrorInFunction(dict_)
+            << "entry modelType " << modelType << " in " << dict_.name() << " is invalid" << nl
+            << "    valid model types: A (alpha grad p in the fluid) B (grad p)" << exit(FatalIOError);
+    }
+    modelB_ = modelType == "B";
+    if (couplingInterval_ <= 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "entry couplingInterval " << couplingInterval_ << " in " << dict_.name()
+            << " is invalid: must be a positive number of DEM steps" << exit(FatalIOError);
+    }
+    if (!(cgFactor_ >= 1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "entry coarseGrainingFactor " << cgFactor_ << " in " << dict_.name()
+            << " is invalid: must be >= 1" << exit(FatalIOError);
+    }
+
+    const wordList names(dict_.get<wordList>("forceModels"));
+    bool hasDrag = false, hasGradP = false, hasArchimedes = false;
+    forAll(names, i)
+    {
+        forces_.append(forceModel::New(names[i], dict_));
+        needs_ |= forces_.last().needs();
+        hasDrag = hasDrag || forces_.last().isDrag();
+        hasGradP = hasGradP || names[i] == "gradPForce";
+        hasArchimedes = hasArchimedes || names[i] == "Archimedes";
+    }
+    if (!hasDrag)
+    {
+        WarningInFunction << "no drag model in forceModels of " << dict_.name() << endl;
+    }
+    if (hasGradP && hasArchimedes)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "forceModels in " << dict_.name() << " has both gradPForce and Archimedes: the pressure"
+            << " gradient already carries the buoyancy, so it would be counted twice" << exit(FatalIOError);
+    }
+
+    if (dict_.lookupOrDefault<Switch>("backgroundFields", false))
+    {
+        cdc_kernel_params prm = readKernelParams(dict_, "backgroundFields");
+        if (prm.expansion_factor == 0) prm.expansion_factor = 5;
+        const cdc_status st = cdc_kernels_create(demMesh_.context(), "bigParticle", &prm, &backgroundKernels_);
+        if (st != CDC_OK)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "backgroundFieldsProps in " << dict_.name() << ": " << cdc_last_error(demMesh_.context())
+                << exit(FatalIOError);
+        }
+    }
+
+    dem_.reset(new liggghtsDem(mesh, dict_));
+
+    Info<< "coarseDemCoupling: model " << modelType << ", voidFractionModel " << voidFraction_.method()
+        << ", smoothing " << voidFraction_.smoothingName() << ", background fields "
+        << (backgroundKernels_ ? "bigParticle kernel" : "void-fraction kernels")
+        << ", drag " << (implicitDrag_ ? "implicit" : "explicit") << ", forces " << names
+        << ", DEM step " << dem_->timestep() << " s x " << couplingInterval_ << endl;
+}
+
+coarseDemCoupling::~coarseDemCoupling()
+{
+    cdc_kernels_destroy(backgroundKernels_);
+}
+
+void coarseDemCoupling::evolveDem()
+{
+    timers_.start(stageTimers::dem);
+    dem_->run(couplingInterval_);
+    timers_.stop();
+}
+
+void coarseDemCoupling::sampleFluid
+(
+    const volVectorField& U, const volScalarField& alpha, const volScalarField& p,
+    const volScalarField& nuEff, const volVectorField* DUDt
+)
+{
+    const cdc_kernels* k = backgroundKernels_ ? backgroundKernels_ : voidFraction_.kernels();
+    const label n = state_.n;
+    auto gatherVector = [&](const vectorField& field, vectorField& out)
+    {
+        out.setSize(n);
+        demMesh_.check
+        (
+            cdc_gather(k, reinterpret_cast<const double*>(field.cdata()), 3, reinterpret_cast<double*>(out.data())),
+            "gather"
+        );
+    };
+    gatherVector(U.primitiveField(), state_.Uf);
+    state_.alphaf.setSize(n);
+    demMesh_.check(cdc_gather(k, alpha.primitiveField().cdata(), 1, state_.alphaf.data()), "gather");
+    if (needs_ & forceModel::needGradP)
+    {
+        gatherVector(fvc::grad(p)().primitiveField(), state_.gradP);
+    }
+    if (needs_ & forceModel::needDivTau)
+    {
+        const volVectorField divTau
+        (
+            fvc::laplacian(nuEff, U) + fvc::div(nuEff*dev2(T(fvc::grad(U))))
+        );
+        gatherVector(divTau.primitiveField(), state_.divTau);
+    }
+    if ((needs_ & forceModel::needDUfDt) && DUDt)
+    {
+        gatherVector(DUDt->primitiveField(), state_.DUfDt);
+    }
+    if (needs_ & forceModel::needVorticity)
+    {
+        gatherVector(fvc::curl(U)().primitiveField(), state_.vorticity);
+    }
+}
+
+void coarseDemCoupling::couple
+(
+    const volVectorField& U, volScalarField& alpha, const volScalarField& p,
+    const volScalarField& nuEff, const volVectorField* DUDt
+)
+{
+    const scalar pi = constant::mathematical::pi;
+    dem_->pull(particles_);
+    const label n = particles_.size();
+    nParticles_ = returnReduce(n, sumOp<label>());
+
+    // particles for the core; NaN positions and bad radii are caught there (named by id)
+    static_assert(sizeof(long long) == sizeof(int64_t), "DEM ids are 64 bit");
+    cdc_particles cp = {int32_t(n), particles_.x.data(), particles_.radius.data(),
+                        reinterpret_cast<const int64_t*>(particles_.id.data()), nullptr};
+
+    // kernels and alpha_p
+    voidFraction_.update(cp, alphaP.primitiveFieldRef());
+    double tLocate = 0, tKernel = 0;
+    cdc_kernels_timing(voidFraction_.kernels(), &tLocate, &tKernel);
+    timers_.add(stageTimers::locate, tLocate);
+    timers_.add(stageTimers::kernel, tKernel);
+    timers_.add(stageTimers::smoothing, voidFraction_.smoothingSeconds());
+    alphaP.correctBoundaryConditions();
+    alpha.primitiveFieldRef() = 1 - alphaP.primitiveField();
+    alpha.correctBoundaryConditions();
+    if (backgroundKernels_)
+    {
+        timers_.start(stageTimers::kernel);
+        buildKernels(demMesh_, backgroundKernels_, cp, "background kernels");
+        timers_.stop();
+    }
+
+    // forces on the particles
+    timers_.start(stageTimers::forces);
+    diameter_.resize(n);
+    volume_.resize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const double r = particles_.radius[i];
+        if (!std::isfinite(particles_.v[3*i]) || !std::isfinite(particles_.v[3*i + 1]) || !std::isfinite(particles_.v[3*i + 2]))
+        {
+            FatalErrorInFunction
+                << "particle " << label(particles_.id[i]) << " has a non-finite velocity at time "
+                << mesh_.time().timeName() << " (DEM diverged: check the DEM time step)" << exit(FatalError);
+        }
+        diameter_[i] = 2*r/cgFactor_;
+        volume_[i] = 4.0/3.0*pi*r*r*r;
+    }
+    state_.n = n;
+    state_.v = reinterpret_cast<const vector*>(particles_.v.data());
+    state_.d = diameter_.data();
+    state_.volume = volume_.data();
+    sampleFluid(U, alpha, p, nuEff, DUDt);
+    if (needs_ & forceModel::needDvDt)
+    {
+        state_.dvdt.setSize(n);
+        const scalar dt = mesh_.time().deltaTValue();
+        for (label i = 0; i < n; ++i)
+        {
+            const auto iter = previousVelocity_.cfind(label(particles_.id[i]));
+            state_.dvdt[i] = iter.found() ? (state_.v[i] - *iter)/dt : Zero;
+        }
+        previousVelocity_.clear();
+        for (label i = 0; i < n; ++i) previousVelocity_.set(label(particles_.id[i]), state_.v[i]);
+    }
+
+    K_.setSize(n);
+    K_ = 0;
+    fOther_.setSize(n);
+    fOther_ = Zero;
+    fReact_.setSize(n);
+    fReact_ = Zero;
+    scalarField Ki(n);
+    vectorField fi(n);
+    for (const forceModel& fm : forces_)
+    {
+        if (fm.isDrag())
+        {
+            Ki = 0;
+            fm.dragCoefficient(state_, fluid_, Ki);
+            K_ += Ki;
+        }
+        else
+        {
+            fi = Zero;
+            fm.addForce(state_, fluid_, fi);
+            fOther_ += fi;
+            if (fm.reactsOnFluid(modelB_)) fReact_ += fi;
+        }
+    }
+    force_.resize(3*n);
+    forceScale_ = 0;
+    vector fParticles(Zero);
+    for (label i = 0; i < n; ++i)
+    {
+        const vector f = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
+        for (direction d = 0; d < 3; ++d) force_[3*i + d] = f[d];
+        fParticles += K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i];
+        forceScale_ += mag(f);
+    }
+    timers_.stop();
+
+    // fluid sources from the same kernels
+    timers_.start(stageTimers::exchange);
+    dem_->push(force_);
+    const cdc_kernels* k = voidFraction_.kernels();
+    const scalar rho = fluid_.rho;
+    vectorField q(n);
+    if (implicitDrag_)
+    {
+        scalarField Kr(K_/rho);
+        demMesh_.check(cdc_spread(k, Kr.cdata(), 1, Ksl.primitiveFieldRef().data()), "spread");
+        forAll(q, i) q[i] = Kr[i]*state_.v[i];
+        demMesh_.check(cdc_spread(k, reinterpret_cast<const double*>(q.cdata()), 3,
+                                  reinterpret_cast<double*>(KslUs.primitiveFieldRef().data())), "spread");
+        forAll(q, i) q[i] = -fReact_[i]/rho;
+    }
+    else
+    {
+        Ksl.primitiveFieldRef() = 0;
+        KslUs.primitiveFieldRef() = Zero;
+        forAll(q, i) q[i] = -(K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i])/rho;
+    }
+    demMesh_.check(cdc_spread(k, reinterpret_cast<const double*>(q.cdata()), 3,
+                              reinterpret_cast<double*>(fFluid.primitiveFieldRef().data())), "spread");
+    Ksl.correctBoundaryConditions();
+    KslUs.correctBoundaryConditions();
+    fFluid.correctBoundaryConditions();
+
+    // balances: solid volume in cells vs particles; momentum the fluid gets (at the current U)
+    // vs minus what the particles get from the reacting forces
+    const scalarField& V = mesh_.V();
+    scalar vp = 0;
+    for (const double v : volume_) vp += v;
+    solidVolumeParticles_ = returnReduce(vp, sumOp<scalar>());
+    solidVolumeCells_ = gSum(alphaP.primitiveField()*V);
+    const vectorField fluidGets
+    (
+        rho*(fFluid.primitiveField() - Ksl.primitiveField()*U.primitiveField() + KslUs.primitiveField())*V
+    );
+    const vector fluidTotal = gSum(fluidGets);
+    reduce(fParticles, sumOp<vector>());
+    reduce(forceScale_, sumOp<scalar>());
+    momentumImbalance_ = mag(fluidTotal + fParticles);
+    timers_.stop();
+}
+
+void coarseDemCoupling::report(Ostream& os) const
+{
+    const scalar volErr = solidVolumeParticles_ > 0
+        ? mag(solidVolumeCells_ - solidVolumeParticles_)/solidVolumeParticles_ : 0;
+    os  << "Coupling: particles " << nParticles_
+        << ", solid volume particles " << solidVolumeParticles_ << " cells " << solidVolumeCells_
+        << " (rel. err " << volErr << ")"
+        << ", momentum imbalance " << momentumImbalance_ << " N of " << forceScale_ << " N"
+        << ", limiter moved " << returnReduce(voidFraction_.movedVolume(), sumOp<scalar>()) << " m3 in "
+        << returnReduce(voidFraction_.nLimitedCells(), sumOp<label>()) << " cells" << endl;
+}
+
+} // End namespace Foam

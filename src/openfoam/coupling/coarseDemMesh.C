@@ -1,0 +1,78 @@
+#include "coarseDemMesh.H"
+#include "wallPolyPatch.H"
+#include "processorPolyPatch.H"
+
+#include <type_traits>
+
+static_assert(sizeof(Foam::label) == sizeof(int32_t), "coarse-dem needs 32-bit labels");
+static_assert(sizeof(Foam::vector) == 3*sizeof(double), "coarse-dem needs vector = 3 doubles");
+
+Foam::coarseDemMesh::coarseDemMesh(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    ctx_(nullptr)
+{
+    const faceList& faces = mesh.faces();
+    faceOffsets_.resize(faces.size() + 1);
+    faceOffsets_[0] = 0;
+    forAll(faces, facei)
+    {
+        faceOffsets_[facei + 1] = faceOffsets_[facei] + faces[facei].size();
+    }
+    facePoints_.resize(faceOffsets_.back());
+    forAll(faces, facei)
+    {
+        std::copy(faces[facei].begin(), faces[facei].end(), facePoints_.begin() + faceOffsets_[facei]);
+    }
+
+    const label nInternal = mesh.nInternalFaces();
+    boundaryKind_.assign(mesh.nFaces() - nInternal, CDC_FACE_OTHER);
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        uint8_t kind = CDC_FACE_OTHER;
+        if (isA<wallPolyPatch>(pp)) kind = CDC_FACE_WALL;
+        else if (isA<processorPolyPatch>(pp)) kind = CDC_FACE_PROCESSOR;
+        for (label i = 0; i < pp.size(); ++i)
+        {
+            boundaryKind_[pp.start() + i - nInternal] = kind;
+        }
+    }
+
+    view_.n_points = mesh.nPoints();
+    view_.n_cells = mesh.nCells();
+    view_.n_faces = mesh.nFaces();
+    view_.n_internal_faces = nInternal;
+    view_.points = reinterpret_cast<const double*>(mesh.points().cdata());
+    view_.face_point_offsets = faceOffsets_.data();
+    view_.face_points = facePoints_.data();
+    view_.owner = mesh.faceOwner().cdata();
+    view_.neighbour = mesh.faceNeighbour().cdata();
+    view_.face_centres = reinterpret_cast<const double*>(mesh.faceCentres().cdata());
+    view_.face_areas = reinterpret_cast<const double*>(mesh.faceAreas().cdata());
+    view_.cell_centres = reinterpret_cast<const double*>(mesh.cellCentres().cdata());
+    view_.cell_volumes = mesh.cellVolumes().cdata();
+    view_.boundary_face_kind = boundaryKind_.data();
+
+    const cdc_status st = cdc_context_create(&view_, &ctx_);
+    if (st != CDC_OK)
+    {
+        FatalErrorInFunction
+            << "mesh " << mesh.polyMesh::path() << ": " << cdc_create_error() << nl
+            << "    (check the mesh with checkMesh)" << exit(FatalError);
+    }
+}
+
+Foam::coarseDemMesh::~coarseDemMesh()
+{
+    cdc_context_destroy(ctx_);
+}
+
+void Foam::coarseDemMesh::check(cdc_status st, const string& what) const
+{
+    if (st != CDC_OK)
+    {
+        FatalErrorInFunction
+            << what << ": " << cdc_last_error(ctx_) << nl
+            << "    at time " << mesh_.time().timeName() << exit(FatalError);
+    }
+}

@@ -1,0 +1,93 @@
+#include "liggghtsDem.H"
+#include "Time.H"
+#include "OSspecific.H"
+
+#include <mpi.h>
+
+#include "lammps.h"
+#include "input.h"
+#include "modify.h"
+#include "update.h"
+#include "fix_couple_coarse.h"
+
+Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
+:
+    lmp_(nullptr),
+    fix_(nullptr)
+{
+    const fileName script = mesh.time().path()/dict.get<fileName>("demScript");
+    const word fixId = dict.lookupOrDefault<word>("demCouplingFix", "cfd");
+    if (!isFile(script))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry demScript in " << dict.name() << ": DEM input script " << script
+            << " not found" << exit(FatalIOError);
+    }
+
+    // OpenFOAM starts MPI only for -parallel; LIGGGHTS needs it in every case.
+    int started = 0;
+    MPI_Initialized(&started);
+    if (!started)
+    {
+        MPI_Init(nullptr, nullptr);
+    }
+
+    const std::string logFile = (mesh.time().path()/"log.liggghts");
+    std::vector<std::string> args = {"liggghts", "-screen", "none", "-log", logFile};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(&a[0]);
+    lmp_ = new LAMMPS_NS::LAMMPS(int(argv.size()), argv.data(), MPI_COMM_WORLD);
+
+    // Relative paths in the script (data files, dumps) are relative to the case.
+    const fileName cwd0 = cwd();
+    chDir(mesh.time().path());
+    lmp_->input->file(script.c_str());
+    chDir(cwd0);
+
+    const int ifix = lmp_->modify->find_fix(fixId.c_str());
+    fix_ = ifix < 0 ? nullptr : dynamic_cast<LAMMPS_NS::FixCoupleCoarse*>(lmp_->modify->fix[ifix]);
+    if (!fix_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "the DEM script " << script << " defines no fix '" << fixId << "' of style couple/coarse" << nl
+            << "    add:  fix " << fixId << " all couple/coarse   (or set demCouplingFix in "
+            << dict.name() << ")" << exit(FatalIOError);
+    }
+}
+
+Foam::liggghtsDem::~liggghtsDem()
+{
+    delete lmp_;
+}
+
+Foam::scalar Foam::liggghtsDem::timestep() const
+{
+    return lmp_->update->dt;
+}
+
+void Foam::liggghtsDem::command(const std::string& line)
+{
+    lmp_->input->one(line.c_str());
+}
+
+void Foam::liggghtsDem::run(label nSteps)
+{
+    command("run " + std::to_string(nSteps) + " pre no post no");
+}
+
+void Foam::liggghtsDem::pull(demParticles& p) const
+{
+    const int n = fix_->nlocal();
+    p.x.resize(3*n);
+    p.v.resize(3*n);
+    p.radius.resize(n);
+    p.density.resize(n);
+    p.type.resize(n);
+    p.id.resize(n);
+    fix_->pull(p.x.data(), p.v.data(), p.radius.data(), p.density.data(), p.type.data(), p.id.data());
+}
+
+void Foam::liggghtsDem::push(const std::vector<double>& f)
+{
+    fix_->push_forces(f.data());
+}

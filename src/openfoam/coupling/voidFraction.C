@@ -1,0 +1,162 @@
+#include "voidFraction.H"
+#include "Time.H"
+
+#include <chrono>
+
+namespace Foam
+{
+
+cdc_kernel_params readKernelParams(const dictionary& dict, const word& name)
+{
+    cdc_kernel_params prm = {};
+    const dictionary& props = dict.optionalSubDict(name + "Props");
+    prm.expansion_factor = props.lookupOrDefault<scalar>("expansionFactor", 0);
+    prm.search_factor = props.lookupOrDefault<scalar>("searchFactor", 0);
+    prm.bandwidth = props.lookupOrDefault<scalar>("bandwidth", 0);
+    prm.cutoff_factor = props.lookupOrDefault<scalar>("cutoffFactor", 0);
+    prm.wall_mirror = props.lookupOrDefault<Switch>("wallMirror", false) ? 1 : 0;
+    if (name == "gaussian" && !props.found("bandwidth"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keyword bandwidth is undefined in dictionary " << dict.name() << "/" << name << "Props"
+            << nl << "    (the Gaussian kernel width b in metres; Zhang et al. recommend b = 6 d)"
+            << exit(FatalIOError);
+    }
+    return prm;
+}
+
+void buildKernels(const coarseDemMesh& mesh, cdc_kernels* k, const cdc_particles& p, const word& what)
+{
+    const cdc_status st = cdc_kernels_build(k, &p);
+    if (st == CDC_ERR_OUTSIDE)
+    {
+        FatalErrorInFunction
+            << what << ": " << cdc_last_error(mesh.context()) << nl
+            << "    at time " << mesh.mesh().time().timeName()
+            << ": particles must stay inside the CFD mesh (check the DEM walls and insertion region)"
+            << exit(FatalError);
+    }
+    mesh.check(st, what);
+}
+
+voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
+:
+    mesh_(mesh),
+    method_(dict.get<word>("voidFractionModel")),
+    params_(readKernelParams(dict, method_)),
+    kernels_(nullptr),
+    smoothing_(smoothing::off),
+    diffusion_(),
+    bandwidthOverD_(0),
+    classRatio_(0),
+    alphaMin_(dict.get<scalar>("alphaMin")),
+    movedVolume_(0),
+    nLimitedCells_(0),
+    nClasses_(0),
+    smoothingSeconds_(0)
+{
+    const cdc_status st = cdc_kernels_create(mesh.context(), method_.c_str(), &params_, &kernels_);
+    if (st != CDC_OK)
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry voidFractionModel " << method_ << " (or its " << method_ << "Props) in "
+            << dict.name() << ": " << cdc_last_error(mesh.context()) << exit(FatalIOError);
+    }
+    if (!(alphaMin_ > 0 && alphaMin_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry alphaMin " << alphaMin_ << " in " << dict.name()
+            << " is invalid: must be in (0, 1) (e.g. 0.3 for spheres)" << exit(FatalIOError);
+    }
+
+    const word sm = dict.lookupOrDefault<word>("smoothingModel", "off");
+    if (sm == "diffusion")
+    {
+        smoothing_ = smoothing::diffusion;
+        const dictionary& d = dict.subDict("diffusionProps");
+        diffusion_.bandwidth = d.get<scalar>("bandwidth");
+        diffusion_.n_steps = d.lookupOrDefault<label>("nSteps", 4);
+        diffusion_.d_rule = d.lookupOrDefault<Switch>("DRule", false) ? 1 : 0;
+        diffusion_.particle_diameter = d.lookupOrDefault<scalar>("particleDiameter", 0);
+        if (!(diffusion_.bandwidth > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry bandwidth " << diffusion_.bandwidth << " in " << dict.name()
+                << "/diffusionProps is invalid: must be > 0 (metres; b = 6 d is recommended)"
+                << exit(FatalIOError);
+        }
+    }
+    else if (sm == "sizeAwareDiffusion")
+    {
+        smoothing_ = smoothing::sizeAware;
+        const dictionary& d = dict.subDict("sizeAwareDiffusionProps");
+        bandwidthOverD_ = d.get<scalar>("bandwidthOverD");
+        classRatio_ = d.lookupOrDefault<scalar>("classRatio", 1.1);
+        diffusion_.n_steps = d.lookupOrDefault<label>("nSteps", 4);
+        if (!(bandwidthOverD_ > 0) || !(classRatio_ > 1))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entries bandwidthOverD " << bandwidthOverD_ << " and classRatio " << classRatio_
+                << " in " << dict.name() << "/sizeAwareDiffusionProps are invalid: need > 0 and > 1"
+                << exit(FatalIOError);
+        }
+    }
+    else if (sm != "off")
+    {
+        FatalIOErrorInFunction(dict)
+            << "unknown smoothingModel " << sm << " in " << dict.name() << nl
+            << "    valid smoothing models: off, diffusion, sizeAwareDiffusion" << exit(FatalIOError);
+    }
+}
+
+voidFraction::~voidFraction()
+{
+    cdc_kernels_destroy(kernels_);
+}
+
+word voidFraction::smoothingName() const
+{
+    switch (smoothing_)
+    {
+        case smoothing::diffusion: return "diffusion";
+        case smoothing::sizeAware: return "sizeAwareDiffusion";
+        default: return "off";
+    }
+}
+
+void voidFraction::update(const cdc_particles& p, scalarField& alphaP)
+{
+    cdc_context* ctx = mesh_.context();
+    buildKernels(mesh_, kernels_, p, "void fraction (" + method_ + ")");
+    double* a = alphaP.data();
+    const auto t0 = std::chrono::steady_clock::now();
+    switch (smoothing_)
+    {
+        case smoothing::off:
+            mesh_.check(cdc_alpha_p(kernels_, &p, a), "alpha_p");
+            break;
+        case smoothing::diffusion:
+            mesh_.check(cdc_alpha_p(kernels_, &p, a), "alpha_p");
+            mesh_.check(cdc_diffuse(ctx, &diffusion_, a), "diffusion smoothing");
+            break;
+        case smoothing::sizeAware:
+        {
+            int n = 0;
+            mesh_.check
+            (
+                cdc_alpha_p_diffused_by_size(ctx, kernels_, &p, bandwidthOverD_, classRatio_, &diffusion_, a, &n),
+                "size-aware diffusion smoothing"
+            );
+            nClasses_ = n;
+            break;
+        }
+    }
+    double moved = 0;
+    int32_t nLimited = 0;
+    mesh_.check(cdc_limit_packing(ctx, 1.0 - alphaMin_, 200, a, &moved, &nLimited), "packing limiter");
+    smoothingSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    movedVolume_ = moved;
+    nLimitedCells_ = nLimited;
+}
+
+} // End namespace Foam

@@ -1,0 +1,27 @@
+/*---------------------------------------------------------------------------*\
+    Archimedes: buoyancy f = -rho V g (Weaver & Miskovic 2023, eq. 14). Use it
+    instead of gradPForce when only the hydrostatic part is wanted.
+\*---------------------------------------------------------------------------*/
+#include "forceModel.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+
+class Archimedes : public forceModel
+{
+public:
+    TypeName("Archimedes");
+    Archimedes(const word& name, const dictionary& props) : forceModel(name, props) {}
+    bool reactsOnFluid(bool modelB) const override { return modelB; }
+
+    void addForce(const particleFluidState& s, const fluidProperties& fl, vectorField& f) const override
+    {
+        for (label i = 0; i < s.n; ++i) f[i] -= fl.rho*s.volume[i]*fl.g;
+    }
+};
+
+defineTypeNameAndDebug(Archimedes, 0);
+addToRunTimeSelectionTable(forceModel, Archimedes, dictionary);
+
+} // End namespace Foam

@@ -1,0 +1,38 @@
+#include "forceModel.H"
+#include "error.H"
+
+namespace Foam
+{
+defineTypeNameAndDebug(forceModel, 0);
+defineRunTimeSelectionTable(forceModel, dictionary);
+}
+
+Foam::forceModel::forceModel(const word& name, const dictionary& props)
+:
+    name_(name)
+{
+    (void)props;
+}
+
+Foam::autoPtr<Foam::forceModel> Foam::forceModel::New(const word& name, const dictionary& couplingDict)
+{
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(couplingDict)
+            << "unknown force model " << name << " in entry forceModels of " << couplingDict.name() << nl
+            << "    valid force models: " << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+    return cstrIter()(name, couplingDict.optionalSubDict(name + "Props"));
+}
+
+void Foam::forceModel::dragCoefficient(const particleFluidState&, const fluidProperties&, scalarField&) const
+{
+    FatalErrorInFunction << name_ << " is not a drag model" << abort(FatalError);
+}
+
+void Foam::forceModel::addForce(const particleFluidState&, const fluidProperties&, vectorField&) const
+{
+    FatalErrorInFunction << name_ << " is a drag model" << abort(FatalError);
+}

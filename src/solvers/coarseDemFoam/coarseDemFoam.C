@@ -1,0 +1,134 @@
+/*---------------------------------------------------------------------------*\
+Application
+    coarseDemFoam
+
+Description
+    Transient incompressible CFD-DEM solver for coarse particles (particles
+    as large as or larger than the cells). LIGGGHTS runs in the same process
+    (fix couple/coarse); the void fraction, the fluid sampling at particles
+    and the momentum exchange use the kernels of the coarse-dem C core,
+    chosen in constant/couplingProperties (see src/openfoam/coupling).
+
+    Fluid: Zhang et al., Phys. Fluids 35, 113330 (2023), eqs. 14-19, PIMPLE;
+    Model A / Model B after Zhou et al. (2010) and Weaver & Miskovic, Fluids
+    8, 215 (2023); drag optionally implicit (Ksl).
+
+    The CFD time step is couplingInterval DEM steps. With adjustTimeStep yes
+    in controlDict the coupling interval adapts to keep the Courant number
+    below maxCo.
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "singlePhaseTransportModel.H"
+#include "turbulentTransportModel.H"
+#include "pimpleControl.H"
+#include "fixedFluxPressureFvPatchScalarField.H"
+#include "coarseDemCoupling.H"
+
+#include <chrono>
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "CFD-DEM solver for coarse particles with LIGGGHTS in-process and"
+        " swappable void-fraction kernels (constant/couplingProperties)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    pimpleControl pimple(mesh);
+    #include "createFields.H"
+    #include "initContinuityErrs.H"
+
+    // CFD step = couplingInterval DEM steps
+    const bool adjustTimeStep = runTime.controlDict().lookupOrDefault<Switch>("adjustTimeStep", false);
+    const scalar maxCo = runTime.controlDict().lookupOrDefault<scalar>("maxCo", 0.5);
+    label nCouple = coupling.couplingInterval();
+    const label maxCouple = nCouple;
+    runTime.setDeltaT(nCouple*coupling.demTimestep());
+    Info<< "CFD time step = " << nCouple << " x DEM step " << coupling.demTimestep() << " s = "
+        << runTime.deltaTValue() << " s" << (adjustTimeStep ? " (adjusted to maxCo)" : "") << nl << endl;
+
+    // First coupling before the first DEM segment, so it starts with the fluid forces.
+    coupling.couple(U, alpha, p, turbulence->nuEff()(), nullptr);
+    alpha.oldTime() = alpha;
+    alphaf = fvc::interpolate(alpha);
+    alphaPhi = alphaf*phi;
+    coupling.report(Info);
+
+    const auto wall0 = std::chrono::steady_clock::now();
+    const scalar t0 = runTime.value();
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "CourantNo.H"
+        if (adjustTimeStep && CoNum > SMALL)
+        {
+            const label n = max(label(1), min(maxCouple, label(nCouple*min(maxCo/CoNum, 1.2))));
+            if (n != nCouple)
+            {
+                nCouple = n;
+                coupling.setCouplingInterval(n);
+                runTime.setDeltaT(nCouple*coupling.demTimestep());
+            }
+        }
+        else if (CoNum > 1)
+        {
+            WarningInFunction << "Courant number " << CoNum << " > 1 with a fixed time step" << endl;
+        }
+        ++runTime;
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        coupling.evolveDem();
+
+        {
+            const tmp<volVectorField> DUDt
+            (
+                (coupling.needs() & forceModel::needDUfDt) ? fvc::DDt(phi, U) : tmp<volVectorField>()
+            );
+            coupling.couple(U, alpha, p, turbulence->nuEff()(), DUDt.valid() ? &DUDt() : nullptr);
+        }
+        alphaf = fvc::interpolate(alpha);
+        alphaPhi = alphaf*phi;
+
+        coupling.timers().start(stageTimers::fluid);
+        while (pimple.loop())
+        {
+            #include "UEqn.H"
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+            if (pimple.turbCorr())
+            {
+                laminarTransport.correct();
+                turbulence->correct();
+            }
+        }
+        coupling.timers().stop();
+
+        runTime.write();
+
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+        const scalar done = runTime.value() - t0, left = runTime.endTime().value() - runTime.value();
+        Info<< "Progress: t = " << runTime.timeName() << " s of " << runTime.endTime().value()
+            << " s, " << label(runTime.timeIndex()) << " steps, wall " << wall << " s, estimated left "
+            << (done > 0 ? wall/done*left : 0) << " s" << nl;
+        if (runTime.writeTime())
+        {
+            coupling.report(Info);
+            coupling.timers().print(Info);
+        }
+        Info<< endl;
+    }
+
+    Info<< "End: ";
+    coupling.report(Info);
+    coupling.timers().print(Info);
+    Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s  ClockTime = " << runTime.elapsedClockTime()
+        << " s" << nl << endl;
+    return 0;
+}
