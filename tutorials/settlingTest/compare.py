@@ -1,0 +1,83 @@
+#!/usr/bin/python3
+"""settlingTest: compare the DEM particle's velocity history with the analytic ODE of the drag law.
+
+    m dv/dt = -(rho_p - rho_f) V g + K(|v|) (-v)     (v < 0 downwards; buoyancy from grad p / Archimedes)
+
+K is the Di Felice drag coefficient at alpha = 1 (Zhang et al. 2023, eqs. A4-A7), the fluid at rest.
+Writes results/summary.csv (quantity, measured, reference, relative error, wall time) and
+results/velocity.csv; prints PASS/FAIL for the terminal velocity within 1 %.
+Usage: compare.py <case dir> <wall seconds>
+"""
+import math, os, sys
+
+case = sys.argv[1] if len(sys.argv) > 1 else "."
+wall = float(sys.argv[2]) if len(sys.argv) > 2 else float("nan")
+d, rho_p, rho_f, nu, g = 2e-3, 2500.0, 1000.0, 1e-6, 9.81
+V = math.pi / 6 * d**3
+m = rho_p * V
+
+def drag_K(ur):
+    """Di Felice, alpha = 1: K = pi/8 rho d^2 (0.63 sqrt|u_r| + 4.8 sqrt(nu/d))^2."""
+    return math.pi / 8 * rho_f * d * d * (0.63 * math.sqrt(ur) + 4.8 * math.sqrt(nu / d)) ** 2
+
+def accel(v):
+    return (-(rho_p - rho_f) * V * g + drag_K(abs(v)) * (-v)) / m
+
+# terminal velocity: K(v) v = (rho_p - rho_f) V g, by bisection
+lo, hi = 0.0, 10.0
+for _ in range(200):
+    mid = 0.5 * (lo + hi)
+    if drag_K(mid) * mid > (rho_p - rho_f) * V * g:
+        hi = mid
+    else:
+        lo = mid
+v_terminal = 0.5 * (lo + hi)
+
+rows = []
+with open(os.path.join(case, "post", "particle.txt")) as f:
+    for line in f:
+        if line.startswith("#") or not line.strip():
+            continue
+        t, z, vz = map(float, line.split()[:3])
+        rows.append((t, z, vz))
+if not rows:
+    sys.exit("compare.py: no particle history in post/particle.txt")
+
+# analytic history (RK4 with the DEM output interval subdivided)
+v, t, h = 0.0, 0.0, 1e-5
+analytic = {}
+times = [r[0] for r in rows]
+k = 0
+tmax = times[-1]
+while t <= tmax + 1e-12:
+    while k < len(times) and times[k] <= t + 1e-12:
+        analytic[k] = v
+        k += 1
+    k1 = accel(v); k2 = accel(v + h / 2 * k1); k3 = accel(v + h / 2 * k2); k4 = accel(v + h * k3)
+    v += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+    t += h
+
+os.makedirs(os.path.join(case, "results"), exist_ok=True)
+with open(os.path.join(case, "results", "velocity.csv"), "w") as f:
+    f.write("t_s,z_m,vz_sim_m_per_s,vz_analytic_m_per_s\n")
+    for i, (t, z, vz) in enumerate(rows):
+        f.write(f"{t:.6g},{z:.6g},{vz:.6g},{analytic.get(i, float('nan')):.6g}\n")
+
+# measured terminal velocity: mean over the last 20 % of the history while still falling freely
+# (before the particle gets within 10 d of the bottom)
+free = [r for r in rows if r[1] > 10 * d]
+tail = free[int(0.8 * len(free)):]
+v_sim = -sum(r[2] for r in tail) / len(tail)
+err = abs(v_sim - v_terminal) / v_terminal
+# history error: max deviation over the free fall, relative to the terminal velocity
+hist_err = max(abs(r[2] - analytic[i]) for i, r in enumerate(rows) if r[1] > 10 * d) / v_terminal
+
+with open(os.path.join(case, "results", "summary.csv"), "w") as f:
+    f.write("quantity,measured,reference,relative_error,wall_time_s\n")
+    f.write(f"terminal_velocity_m_per_s,{v_sim:.6g},{v_terminal:.6g},{err:.3e},{wall:.1f}\n")
+    f.write(f"velocity_history_max_deviation_over_vt,{hist_err:.6g},0,{hist_err:.3e},{wall:.1f}\n")
+print(f"settlingTest: terminal velocity {v_sim:.5f} m/s, analytic {v_terminal:.5f} m/s, error {100*err:.2f} %")
+print(f"settlingTest: velocity history max deviation {100*hist_err:.2f} % of v_t")
+ok = err <= 0.01
+print(("PASS" if ok else "FAIL") + f" settlingTest/terminal_velocity_within_1pct ({100*err:.2f} %)")
+sys.exit(0 if ok else 1)
