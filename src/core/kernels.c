@@ -233,7 +233,8 @@ int32_t cdc_kernels_outside(const cdc_kernels *k, const int64_t **ids)
 
 cdc_status cdc_spread(const cdc_kernels *k, const double *q, int ncomp, double *out)
 {
-    if (!k || !q || !out || ncomp <= 0)
+    /* a rank may hold no particles: then q may be NULL */
+    if (!k || (!q && k->n > 0) || !out || ncomp <= 0)
         return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT, "cdc_spread: NULL argument or ncomp <= 0");
     const cdc_mesh *m = k->ctx->mesh;
     memset(out, 0, (size_t)m->n_cells * (size_t)ncomp * sizeof *out);
@@ -267,7 +268,7 @@ cdc_status cdc_alpha_p(const cdc_kernels *k, const cdc_particles *p, double *alp
 
 cdc_status cdc_gather(const cdc_kernels *k, const double *field, int ncomp, double *out)
 {
-    if (!k || !field || !out || ncomp <= 0)
+    if (!k || !field || (!out && k->n > 0) || ncomp <= 0)
         return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT, "cdc_gather: NULL argument or ncomp <= 0");
     /* The adjoint of cdc_spread: what a particle sees is the kernel-weighted mean of the field.
      * For kernels uniform in volume fraction (w_c = V_c / sum V_c) this is eqs. 21-22. */

@@ -15,7 +15,9 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     lmp_(nullptr),
     fix_(nullptr)
 {
-    const fileName script = mesh.time().path()/dict.get<fileName>("demScript");
+    // the DEM script and its relative paths belong to the case, not to processorN/
+    const fileName caseDir = mesh.time().globalPath();
+    const fileName script = caseDir/dict.get<fileName>("demScript");
     const word fixId = dict.lookupOrDefault<word>("demCouplingFix", "cfd");
     if (!isFile(script))
     {
@@ -32,7 +34,7 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
         MPI_Init(nullptr, nullptr);
     }
 
-    const std::string logFile = (mesh.time().path()/"log.liggghts");
+    const std::string logFile = (caseDir/"log.liggghts");
     std::vector<std::string> args = {"liggghts", "-screen", "none", "-log", logFile};
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(&a[0]);
@@ -40,7 +42,7 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
 
     // Relative paths in the script (data files, dumps) are relative to the case.
     const fileName cwd0 = cwd();
-    chDir(mesh.time().path());
+    chDir(caseDir);
     lmp_->input->file(script.c_str());
     chDir(cwd0);
 
