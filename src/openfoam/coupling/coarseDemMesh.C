@@ -1,6 +1,8 @@
 #include "coarseDemMesh.H"
 #include "wallPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "symmetryPolyPatch.H"
+#include "symmetryPlanePolyPatch.H"
 
 #include <type_traits>
 
@@ -30,7 +32,11 @@ Foam::coarseDemMesh::coarseDemMesh(const fvMesh& mesh)
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
         uint8_t kind = CDC_FACE_OTHER;
-        if (isA<wallPolyPatch>(pp)) kind = CDC_FACE_WALL;
+        // a symmetry plane mirrors the flow, so kernels mirror across it like across a wall
+        if (isA<wallPolyPatch>(pp) || isA<symmetryPolyPatch>(pp) || isA<symmetryPlanePolyPatch>(pp))
+        {
+            kind = CDC_FACE_WALL;
+        }
         else if (isA<processorPolyPatch>(pp)) kind = CDC_FACE_PROCESSOR;
         for (label i = 0; i < pp.size(); ++i)
         {

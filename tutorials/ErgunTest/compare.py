@@ -1,0 +1,46 @@
+#!/usr/bin/python3
+"""ErgunTest: pressure drop across the middle of the fixed bed against the Ergun equation,
+    dp/dz = 150 mu (1-eps)^2 U / (eps^3 d^2) + 1.75 rho (1-eps) U^2 / (eps^3 d),
+with U the superficial velocity, the measured drop taken net of the fluid's hydrostatic part
+rho g L (p includes it: the fluid equation carries alpha g), and eps the mean fluid fraction of the cells between the two
+measuring planes (z = 15.95 and 28.05 mm, cell centres, 4 mm inside the bed's ends so that the
+kernel's smoothing of the bed edges stays out). Appends to results/summary.csv.
+Usage: compare.py <time dir> <U> <wall seconds>
+"""
+import os, re, sys
+
+tdir, U, wall = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+rho, nu, d = 1.2, 1.5e-5, 1e-3
+mu = rho * nu
+nx, ny, nz, dz = 10, 10, 50, 1.1e-3
+
+def read_scalar(path):
+    txt = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(", txt)
+    if m:
+        n = int(m.group(1))
+        vals = txt[m.end():].split(")")[0].split()
+        return [float(v) for v in vals[:n]]
+    m = re.search(r"internalField\s+uniform\s+([-+0-9.eE]+)", txt)
+    return [float(m.group(1))] * (nx * ny * nz)
+
+p = read_scalar(os.path.join(tdir, "p"))
+alpha = read_scalar(os.path.join(tdir, "alpha"))
+def layer_mean(f, k):
+    return sum(f[k * nx * ny:(k + 1) * nx * ny]) / (nx * ny)
+k1, k2 = 14, 25                       # cell centres at 15.95 mm and 28.05 mm
+L = (k2 - k1) * dz
+g = 9.81
+dp = rho * (layer_mean(p, k1) - layer_mean(p, k2)) - rho * g * L   # p is kinematic
+eps = sum(layer_mean(alpha, k) for k in range(k1, k2 + 1)) / (k2 - k1 + 1)
+ergun = (150 * mu * (1 - eps) ** 2 * U / (eps ** 3 * d * d) + 1.75 * rho * (1 - eps) * U * U / (eps ** 3 * d)) * L
+err = abs(dp - ergun) / ergun
+os.makedirs("results", exist_ok=True)
+new = not os.path.exists("results/summary.csv")
+with open("results/summary.csv", "a") as f:
+    if new:
+        f.write("quantity,measured,reference,relative_error,wall_time_s\n")
+    f.write(f"pressure_drop_Pa_U{U:g}_eps{eps:.4f},{dp:.6g},{ergun:.6g},{err:.3e},{wall:.1f}\n")
+ok = err <= 0.05
+print(("PASS" if ok else "FAIL") + f" ErgunTest/U={U:g}: dp {dp:.4g} Pa, Ergun {ergun:.4g} Pa (eps {eps:.4f}), error {100*err:.2f} %")
+sys.exit(0 if ok else 1)
