@@ -41,6 +41,8 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     lmp_ = new LAMMPS_NS::LAMMPS(int(argv.size()), argv.data(), MPI_COMM_WORLD);
 
     // Relative paths in the script (data files, dumps) are relative to the case.
+    Info<< "Reading DEM script " << script << " (LIGGGHTS log: " << logFile
+        << "; a DEM input error stops the run with its message there)" << endl;
     const fileName cwd0 = cwd();
     chDir(caseDir);
     lmp_->input->file(script.c_str());

@@ -1,0 +1,64 @@
+#!/bin/bash
+# Bad input to coarseDemFoam: each case edits a copy of tutorials/ErgunTest, runs the solver and
+# checks that it stops (non-zero exit) with a message naming the file/entry, the valid names, or
+# the particle and time. Prints PASS/FAIL per case and "N passed, N failed".
+here="$(cd "$(dirname "$0")" && pwd)"
+top="$(cd "$here/../.." && pwd)"
+. "$top/etc/bashrc" || exit 1
+work=$(mktemp -d /tmp/coarsedem-dicterr.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+base="$work/base"
+cp -r "$top/tutorials/ErgunTest" "$base"
+(cd "$base" && ./Allclean > /dev/null && cp -r 0.orig 0 && sed -i 's/INLET_VELOCITY/0.1/' 0/U &&
+ sed -i 's/^endTime .*/endTime 0.001;/' system/controlDict && blockMesh > log.blockMesh 2>&1) ||
+    { echo "FAIL: dictionary errors: could not prepare the base case"; echo "0 passed, 1 failed"; exit 1; }
+
+pass=0; fail=0
+# check NAME 'sed expression on constant/couplingProperties' 'expected text' ['extra shell on the case']
+check() {
+    local name="$1" edit="$2" expect="$3" extra="${4:-}"
+    local c="$work/$name"
+    cp -r "$base" "$c"
+    [ -n "$edit" ] && sed -i "$edit" "$c/constant/couplingProperties"
+    [ -n "$extra" ] && (cd "$c" && eval "$extra")
+    (cd "$c" && timeout 120 coarseDemFoam > log 2>&1)
+    local rc=$?
+    # LIGGGHTS reports its own errors in log.liggghts (its screen output is off)
+    if [ $rc -ne 0 ] && cat "$c/log" "$c/log.liggghts" 2>/dev/null | grep -qF -- "$expect"; then
+        echo "PASS: dictionary error '$name' stops with: $expect"; pass=$((pass+1))
+    else
+        echo "FAIL: dictionary error '$name' (exit $rc) did not stop with: $expect"
+        grep -A3 "FATAL" "$c/log" | head -6 | sed 's/^/    /'
+        fail=$((fail+1))
+    fi
+}
+
+check unknown_model 's/^voidFractionModel .*/voidFractionModel centroid;/' \
+    "unknown void fraction method 'centroid'; valid methods are: centre, divided, bigParticle, twoGrid, gaussian, exact"
+check unknown_model_file 's/^voidFractionModel .*/voidFractionModel centroid;/' "constant/couplingProperties"
+check missing_keyword '/^couplingInterval/d' "Entry 'couplingInterval' not found in dictionary"
+check unknown_force 's/GidaspowDrag/GidaspowDarg/' "unknown force model GidaspowDarg in entry forceModels"
+check force_list_valid 's/GidaspowDrag/GidaspowDarg/' "DiFeliceDrag"
+check expansion_lt_1 's/bigParticleProps .*/bigParticleProps { expansionFactor 0.5; }/' \
+    "bigParticle: expansionFactor 0.5 is invalid (must be >= 1"
+check bandwidth_le_0 's/^voidFractionModel .*/voidFractionModel gaussian;/; s/gaussianProps .*/gaussianProps { bandwidth -1e-3; }/' \
+    "gaussian: bandwidth -0.001 is invalid (must be > 0)"
+check diffusion_bandwidth_0 's/^smoothingModel .*/smoothingModel diffusion;/; s/diffusionProps .*/diffusionProps { bandwidth 0; }/' \
+    "diffusionProps is invalid: must be > 0"
+check alphaMin_1.5 's/^alphaMin .*/alphaMin 1.5;/' "entry alphaMin 1.5"
+check alphaMin_0 's/^alphaMin .*/alphaMin 0;/' "must be in (0, 1)"
+check couplingInterval_0 's/^couplingInterval .*/couplingInterval 0;/' "entry couplingInterval 0"
+check couplingInterval_neg 's/^couplingInterval .*/couplingInterval -5;/' "must be a positive number of DEM steps"
+check modelType_C 's/^modelType .*/modelType C;/' "valid model types: A"
+check gradP_and_Archimedes 's/GidaspowDrag gradPForce/GidaspowDrag gradPForce Archimedes/' "counted twice"
+check dem_script_missing 's|^demScript .*|demScript "DEM/nothere.liggghts";|' "DEM/nothere.liggghts\" not found"
+check dem_no_fix '' "defines no fix 'cfd' of style couple/coarse" "sed -i '/couple\/coarse/d' DEM/in.liggghts"
+check dem_script_fails '' "ERROR: Invalid fix style" "echo 'fix bad all no_such_style' >> DEM/in.liggghts"
+# a particle inside the DEM box but outside the CFD mesh: named by id, with the time
+check particle_outside '' "1 particle(s) outside the mesh, ids: 2001" \
+    "sed -i 's/0 0.011 0 0.011 0 0.055 units box/0 0.011 0 0.011 0 0.08 units box/; s/^fix *cfd.*/create_atoms 1 single 0.005 0.005 0.07 units box\nset atom 2001 diameter 0.001 density 2500\n&/' DEM/in.liggghts"
+check particle_outside_time '' "at time 0" \
+    "sed -i 's/0 0.011 0 0.011 0 0.055 units box/0 0.011 0 0.011 0 0.08 units box/; s/^fix *cfd.*/create_atoms 1 single 0.005 0.005 0.07 units box\nset atom 2001 diameter 0.001 density 2500\n&/' DEM/in.liggghts"
+
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]
