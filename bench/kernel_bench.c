@@ -1,0 +1,254 @@
+/*
+ * kernel_bench.c -- micro-benchmark of the core's kernel methods: time per particle of the kernel
+ * build and of alpha_p spreading, each as a ratio to a "touch-only" loop over the same kernel.
+ *
+ * Setup per particle count N: a cube of n^3 box cells with dx = d = 1 mm, n = round(cbrt(N pi/6 / 0.3))
+ * so the mean alpha_p is ~0.3; N particles of diameter d at uniform random positions (fully inside,
+ * overlaps allowed, fixed seed, in random memory order: no spatial sorting); all boundary faces walls.
+ *
+ * For each method:
+ *   first   the first cdc_kernels_build: no host hints (every particle located through the spatial
+ *           bins), fresh kernel buffers -- the first coupling step. It fills the host hints.
+ *   build   cdc_kernels_build again, hints valid (the steady state: particles move less than a cell
+ *           per coupling step), buffers at capacity; cdc_kernels_timing gives the locate share
+ *   alpha   cdc_alpha_p from those kernels (zero the cell field, spread, divide by V_c)
+ *   touch   the irreducible use of the same kernel: zero a cell array, then for every particle and
+ *           every (cell, weight) of its kernel acc[cell] += weight * V_p. Its result is checked
+ *           against alpha_p * V_c, so it cannot be optimised away and the kernels are right.
+ * Ratios build/touch, alpha/touch and first/touch come from the same run on the same kernels.
+ * Short timings are repeated (median; >= 0.3 s of builds, >= 0.2 s of alpha + touch, >= 3 times).
+ *
+ * exact (~200 us/particle) and gaussian with b = 3d (~800 cells per kernel) are timed on the first
+ * CAP_EXACT / CAP_GAUSSIAN particles of the set (same mesh) when N is larger, so that the 1e6 case
+ * stays within the time and memory budget; the n_timed column says so.
+ *
+ * Usage: kernel_bench [-o results/kernels.csv] [-n 1000,10000,100000,1000000]
+ */
+#include "../src/core/coarse_dem.h"
+#include "../src/core/tools/box_mesh.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define PI 3.14159265358979323846
+static const double D = 1e-3;
+/* particles timed at most for the slow methods (the first ones of the set, same mesh) */
+static const int CAP_GAUSSIAN = 20000, CAP_EXACT = 10000;
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void die(const char *what, const char *msg)
+{
+    fprintf(stderr, "kernel_bench: %s: %s\n", what, msg ? msg : "");
+    exit(1);
+}
+
+static uint64_t rng_state = 12345;
+static double rnd(void)
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+typedef struct {
+    const char *name;
+    const char *core;
+    cdc_kernel_params prm;
+    int cap; /* 0: all particles */
+} method_def;
+
+/* The touch-only loop: zero the cells, accumulate weight * particle volume. */
+static void touch(const int32_t *off, const int32_t *cells, const double *w, const double *vol, int32_t np,
+                  double *acc, int32_t nc)
+{
+    memset(acc, 0, (size_t)nc * sizeof *acc);
+    for (int32_t i = 0; i < np; ++i) {
+        const double v = vol[i];
+        for (int32_t e = off[i]; e < off[i + 1]; ++e) acc[cells[e]] += w[e] * v;
+    }
+}
+
+#define MAX_REPS 51
+
+int main(int argc, char **argv)
+{
+    const char *out = "results/kernels.csv";
+    const char *list = "1000,10000,100000,1000000";
+    for (int a = 1; a < argc; ++a) {
+        if (!strcmp(argv[a], "-o") && a + 1 < argc) out = argv[++a];
+        else if (!strcmp(argv[a], "-n") && a + 1 < argc) list = argv[++a];
+        else {
+            fprintf(stderr, "usage: %s [-o CSV] [-n N1,N2,...]\n", argv[0]);
+            return 2;
+        }
+    }
+    FILE *csv = fopen(out, "w");
+    if (!csv) die(out, strerror(errno));
+    fprintf(csv, "n_particles,n_cells,method,n_timed,cells_per_kernel,reps,build_s_per_particle,"
+                 "locate_s_per_particle,alpha_s_per_particle,touch_s_per_particle,build_over_touch,"
+                 "alpha_over_touch,first_build_s_per_particle,first_locate_s_per_particle,first_build_over_touch,"
+                 "touch_check_rel_err\n");
+
+    method_def methods[6];
+    memset(methods, 0, sizeof methods);
+    methods[0].name = "centre";
+    methods[1].name = "divided";
+    methods[2].name = "bigParticle_n5";
+    methods[2].core = "bigParticle";
+    methods[2].prm.expansion_factor = 5;
+    methods[3].name = "twoGrid";
+    methods[3].prm.search_factor = 3;
+    methods[4].name = "gaussian_b3d";
+    methods[4].core = "gaussian";
+    methods[4].prm.bandwidth = 3 * D;
+    methods[4].cap = CAP_GAUSSIAN;
+    methods[5].name = "exact";
+    methods[5].cap = CAP_EXACT;
+    for (int m = 0; m < 6; ++m)
+        if (!methods[m].core) methods[m].core = methods[m].name;
+
+    static const uint8_t walls[6] = {CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL,
+                                     CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};
+    const double t_all = now();
+    printf("%9s %9s %-15s %8s %8s %5s %11s %11s %11s %9s %9s %7s %10s %7s\n", "N", "cells", "method", "timed",
+           "cells/k", "reps", "build s/p", "alpha s/p", "touch s/p", "build/tch", "alpha/tch", "locate%",
+           "first/tch", "locate%");
+
+    for (const char *s = list; *s;) {
+        char *end;
+        const long N = (long)strtod(s, &end);
+        if (end == s || N <= 0 || N > 100000000L) die("-n", "bad particle count");
+        s = *end == ',' ? end + 1 : end;
+
+        const int n = (int)lround(cbrt(N * (PI / 6.0) / 0.3));
+        const double L = n * D;
+        box_mesh b;
+        const double lo[3] = {0, 0, 0}, hi[3] = {L, L, L};
+        if (box_mesh_create(&b, n, n, n, lo, hi, walls, 0.0) != 0) die("box_mesh_create", "failed");
+        cdc_context *ctx = NULL;
+        if (cdc_context_create(&b.mesh, &ctx) != CDC_OK) die("cdc_context_create", cdc_create_error());
+        {
+            const double p0[3] = {0.5 * L, 0.5 * L, 0.5 * L};
+            int32_t c;
+            if (cdc_locate_point(ctx, p0, -1, &c) != CDC_OK) die("locate", cdc_last_error(ctx)); /* builds bins */
+        }
+        const int32_t nc = b.mesh.n_cells;
+        double *pos = malloc(3 * sizeof(double) * (size_t)N), *rad = malloc(sizeof(double) * (size_t)N);
+        double *vol = malloc(sizeof(double) * (size_t)N);
+        int32_t *hints = malloc(sizeof(int32_t) * (size_t)N);
+        double *alpha = malloc(sizeof(double) * (size_t)nc), *acc = malloc(sizeof(double) * (size_t)nc);
+        if (!pos || !rad || !vol || !hints || !alpha || !acc) die("allocation", "out of memory");
+        const double R = 0.5 * D;
+        for (long i = 0; i < N; ++i) {
+            for (int a = 0; a < 3; ++a) pos[3 * i + a] = R + (L - 2 * R) * rnd();
+            rad[i] = R;
+            vol[i] = 4.0 / 3.0 * PI * R * R * R;
+        }
+
+        for (int m = 0; m < 6; ++m) {
+            const method_def *md = methods + m;
+            const int32_t nt = (int32_t)(md->cap && N > md->cap ? md->cap : N);
+            cdc_particles p = {nt, pos, rad, NULL, hints};
+            cdc_kernels *k = NULL;
+            if (cdc_kernels_create(ctx, md->core, &md->prm, &k) != CDC_OK) die(md->name, cdc_last_error(ctx));
+
+            /* first build: no hints (every particle located from scratch through the spatial bins)
+             * and fresh buffers -- the first coupling step. It fills the host hints. */
+            for (int32_t i = 0; i < nt; ++i) hints[i] = -1;
+            double tb[MAX_REPS], tl_sum = 0.0, tk, tl_first;
+            double t0 = now();
+            if (cdc_kernels_build(k, &p) != CDC_OK) die(md->name, cdc_last_error(ctx));
+            const double first = now() - t0;
+            cdc_kernels_timing(k, &tl_first, &tk);
+            /* steady state: particles still in the hinted cells (they move less than a cell per
+             * coupling step), buffers at capacity; repeated for >= 0.3 s in all, median */
+            int reps = (int)ceil(0.3 / (first > 1e-9 ? first : 1e-9));
+            reps = reps < 1 ? 1 : reps > MAX_REPS ? MAX_REPS : reps;
+            for (int r = 0; r < reps; ++r) {
+                t0 = now();
+                if (cdc_kernels_build(k, &p) != CDC_OK) die(md->name, cdc_last_error(ctx));
+                tb[r] = now() - t0;
+                double tl;
+                cdc_kernels_timing(k, &tl, &tk);
+                tl_sum += tl;
+            }
+            tl_sum /= reps;
+            const double t_build = median(tb, reps);
+            const int32_t *off = cdc_kernels_offsets(k), *cells = cdc_kernels_cells(k);
+            const double *w = cdc_kernels_weights(k);
+            const double cpk = (double)off[nt] / nt;
+
+            /* alpha_p and touch-only: enough repetitions for >= 0.1 s each, at least 3, median */
+            double ta[MAX_REPS], tt[MAX_REPS];
+            t0 = now();
+            if (cdc_alpha_p(k, &p, alpha) != CDC_OK) die(md->name, cdc_last_error(ctx));
+            touch(off, cells, w, vol, nt, acc, nc);
+            const double pair = now() - t0;
+            int reps2 = (int)ceil(0.2 / (pair > 1e-9 ? pair : 1e-9));
+            reps2 = reps2 < 3 ? 3 : reps2 > MAX_REPS ? MAX_REPS : reps2;
+            for (int r = 0; r < reps2; ++r) {
+                t0 = now();
+                if (cdc_alpha_p(k, &p, alpha) != CDC_OK) die(md->name, cdc_last_error(ctx));
+                ta[r] = now() - t0;
+                t0 = now();
+                touch(off, cells, w, vol, nt, acc, nc);
+                tt[r] = now() - t0;
+            }
+            const double t_alpha = median(ta, reps2), t_touch = median(tt, reps2);
+
+            /* the touch loop computed alpha_p * V_c */
+            double err = 0.0, tot = 0.0;
+            for (int32_t c = 0; c < nc; ++c) {
+                err += fabs(acc[c] - alpha[c] * b.mesh.cell_volumes[c]);
+                tot += acc[c];
+            }
+            const double rel = err / tot;
+            if (!(rel < 1e-12)) die(md->name, "touch-only result differs from alpha_p * V_c");
+
+            fprintf(csv, "%ld,%d,%s,%d,%.2f,%d,%.4e,%.4e,%.4e,%.4e,%.3f,%.3f,%.4e,%.4e,%.3f,%.1e\n", N, nc, md->name,
+                    nt, cpk, reps, t_build / nt, tl_sum / nt, t_alpha / nt, t_touch / nt, t_build / t_touch,
+                    t_alpha / t_touch, first / nt, tl_first / nt, first / t_touch, rel);
+            fflush(csv);
+            printf("%9ld %9d %-15s %8d %8.1f %5d %11.3e %11.3e %11.3e %9.1f %9.2f %6.0f%% %10.1f %6.0f%%\n", N, nc,
+                   md->name, nt, cpk, reps, t_build / nt, t_alpha / nt, t_touch / nt, t_build / t_touch,
+                   t_alpha / t_touch, 100.0 * tl_sum / t_build, first / t_touch, 100.0 * tl_first / first);
+            fflush(stdout);
+            cdc_kernels_destroy(k);
+        }
+        free(pos);
+        free(rad);
+        free(vol);
+        free(hints);
+        free(alpha);
+        free(acc);
+        cdc_context_destroy(ctx);
+        box_mesh_destroy(&b);
+    }
+    fclose(csv);
+    printf("total %.1f s; results in %s\n", now() - t_all, out);
+    return 0;
+}
