@@ -152,8 +152,8 @@ static cdc_status record_outside(cdc_kernels *k, int64_t id)
 
 static double now_seconds(void)
 {
-    struct timespec ts;
-    timespec_get(&ts, TIME_UTC);
+    struct timespec ts; /* monotonic: immune to clock adjustments */
+    clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 

@@ -79,7 +79,7 @@ static cdc_status build_bins(cdc_context *ctx)
     const double h = cbrt(ctx->total_volume / m->n_cells);
     size_t total = 1;
     for (int d = 0; d < 3; ++d) {
-        double nb = ceil(span[d] / h);
+        double nb = ceil(span[d] / h * (1.0 - 1e-12)); /* 120 cells of size h: 120 bins, not 121 */
         if (nb < 1) nb = 1;
         if (nb > 1024) nb = 1024;
         ctx->nbin[d] = (int32_t)nb;
@@ -104,8 +104,13 @@ static cdc_status build_bins(cdc_context *ctx)
             const double *bb = ctx->cell_bbox + 6 * (size_t)c;
             int32_t lo[3], hi[3];
             for (int d = 0; d < 3; ++d) {
-                lo[d] = (int32_t)floor((bb[d] - ctx->bin_lo[d]) / ctx->bin_size[d]);
-                hi[d] = (int32_t)floor((bb[3 + d] - ctx->bin_lo[d]) / ctx->bin_size[d]);
+                /* A box edge that falls on a bin edge (box meshes with one cell per bin) must not
+                 * register the cell in the next bin too: shrink the box by a hair first. Points
+                 * within the tolerance of a face are still found: the walk or a neighbour bin
+                 * holds the cell that shares the face. */
+                const double eps = 1e-9 * ctx->bin_size[d];
+                lo[d] = (int32_t)floor((bb[d] + eps - ctx->bin_lo[d]) / ctx->bin_size[d]);
+                hi[d] = (int32_t)floor((bb[3 + d] - eps - ctx->bin_lo[d]) / ctx->bin_size[d]);
                 if (lo[d] < 0) lo[d] = 0;
                 if (hi[d] >= ctx->nbin[d]) hi[d] = ctx->nbin[d] - 1;
             }
