@@ -1,5 +1,6 @@
 #include "coarseDemCoupling.H"
 #include "fvc.H"
+#include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
 
 #include <cmath>
@@ -22,6 +23,7 @@ coarseDemCoupling::coarseDemCoupling
     modelB_(false),
     couplingInterval_(dict_.get<label>("couplingInterval")),
     implicitDrag_(dict_.lookupOrDefault<Switch>("implicitDrag", true)),
+    demRestart_(dict_.lookupOrDefault<Switch>("demRestart", true)),
     cgFactor_(dict_.lookupOrDefault<scalar>("coarseGrainingFactor", 1)),
     fluid_{rho.value(), nu.value(), g.value()},
     demMesh_(mesh),
@@ -33,7 +35,7 @@ coarseDemCoupling::coarseDemCoupling
     alphaP
     (
         IOobject("alphaP", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
-        mesh, dimensionedScalar(dimless, Zero)
+        mesh, dimensionedScalar(dimless, Zero), zeroGradientFvPatchScalarField::typeName
     ),
     Ksl
     (
@@ -104,6 +106,18 @@ coarseDemCoupling::coarseDemCoupling
                 << "backgroundFieldsProps in " << dict_.name() << ": " << cdc_last_error(demMesh_.context())
                 << exit(FatalIOError);
         }
+    }
+
+    if (dict_.lookupOrDefault<Switch>("solidVelocityField", false))
+    {
+        alphaPUs.reset
+        (
+            new volVectorField
+            (
+                IOobject("alphaPUs", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
+                mesh, dimensionedVector(dimVelocity, Zero), zeroGradientFvPatchVectorField::typeName
+            )
+        );
     }
 
     dem_.reset(new liggghtsDem(mesh, dict_));
@@ -295,6 +309,13 @@ void coarseDemCoupling::couple
     }
     demMesh_.check(cdc_spread(k, reinterpret_cast<const double*>(q.cdata()), 3,
                               reinterpret_cast<double*>(fFluid.primitiveFieldRef().data())), "spread");
+    if (alphaPUs.valid())
+    {
+        forAll(q, i) q[i] = volume_[i]*state_.v[i];
+        demMesh_.check(cdc_spread(k, reinterpret_cast<const double*>(q.cdata()), 3,
+                                  reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data())), "spread");
+        alphaPUs().correctBoundaryConditions();
+    }
     Ksl.correctBoundaryConditions();
     KslUs.correctBoundaryConditions();
     fFluid.correctBoundaryConditions();
@@ -315,6 +336,16 @@ void coarseDemCoupling::couple
     reduce(forceScale_, sumOp<scalar>());
     momentumImbalance_ = mag(fluidTotal + fParticles);
     timers_.stop();
+}
+
+void coarseDemCoupling::write()
+{
+    if (demRestart_ && mesh_.time().writeTime())
+    {
+        const fileName dir = mesh_.time().globalPath()/mesh_.time().timeName();
+        if (Pstream::master()) mkDir(dir);
+        dem_->command("write_restart " + std::string(dir/"dem.restart"));
+    }
 }
 
 void coarseDemCoupling::report(Ostream& os) const

@@ -35,12 +35,20 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     }
 
     const std::string logFile = (caseDir/"log.liggghts");
-    std::vector<std::string> args = {"liggghts", "-screen", "none", "-log", logFile};
+    // A restarted run continues the DEM from <startTime>/dem.restart: the script gets
+    // ${restarting} (1 or 0) and ${restart} (the file, or "none") and chooses what to read, e.g.
+    //   if "${restarting} == 1" then "read_restart ${restart}" else "read_restart DEM/init.restart"
+    const fileName restartFile = caseDir/mesh.time().timeName()/"dem.restart";
+    const std::string restart = isFile(restartFile) ? std::string(restartFile) : std::string("none");
+    std::vector<std::string> args =
+        {"liggghts", "-screen", "none", "-log", logFile, "-var", "restart", restart,
+         "-var", "restarting", restart == "none" ? "0" : "1"};
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(&a[0]);
     lmp_ = new LAMMPS_NS::LAMMPS(int(argv.size()), argv.data(), MPI_COMM_WORLD);
 
     // Relative paths in the script (data files, dumps) are relative to the case.
+    Info<< "DEM restart file: " << restart << nl;
     Info<< "Reading DEM script " << script << " (LIGGGHTS log: " << logFile
         << "; a DEM input error stops the run with its message there)" << endl;
     const fileName cwd0 = cwd();

@@ -111,6 +111,7 @@ int main(int argc, char *argv[])
         coupling.timers().stop();
 
         runTime.write();
+        coupling.write();
 
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
         const scalar done = runTime.value() - t0, left = runTime.endTime().value() - runTime.value();

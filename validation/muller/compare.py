@@ -1,0 +1,95 @@
+#!/usr/bin/python3
+"""Compare a Mueller-bed run's time-averaged profiles with the MR data.
+
+    compare.py <run results dir> <data dir> [-U 0.9] [-o out dir]
+
+The run's profiles are results/profile_<quantity>_z<h>mm.csv (from profiles.py), with columns
+x_m,<quantity>,sem. Every data file of the data directory's format,
+mueller_U<U>_<quantity>_z<h>mm_MR.csv (columns x_m,<quantity>), for the run's U is compared where a
+simulated profile at that height exists: the simulation is interpolated linearly to the data's x,
+and the RMS and maximum absolute errors are reported. Writes <out>/errors.csv, <out>/errors.md and
+one PNG per profile (simulation with its batch-means error bar vs experiment).
+"""
+import csv, glob, math, os, re, sys
+
+def read_profile(path):
+    xs, ys, es = [], [], []
+    with open(path) as f:
+        rows = [r for r in csv.reader(l for l in f if not l.startswith("#"))]
+    header = rows[0]
+    for r in rows[1:]:
+        xs.append(float(r[0])); ys.append(float(r[1]))
+        es.append(float(r[2]) if len(r) > 2 and r[2] else float("nan"))
+    return header, xs, ys, es
+
+def interp(x, xs, ys):
+    if x <= xs[0]: return ys[0]
+    if x >= xs[-1]: return ys[-1]
+    for i in range(1, len(xs)):
+        if x <= xs[i]:
+            t = (x - xs[i - 1]) / (xs[i] - xs[i - 1])
+            return ys[i - 1] + t * (ys[i] - ys[i - 1])
+
+QUANTITY = {"voidfraction": "void_fraction", "vz": "vz_particle_m_per_s"}
+
+def compare(results, data_dir, U, out):
+    os.makedirs(out, exist_ok=True)
+    rows = []
+    for path in sorted(glob.glob(os.path.join(data_dir, "mueller_U*_*_z*mm_MR.csv"))):
+        m = re.match(r"mueller_U([0-9.]+)_(\w+?)_z([0-9.]+)mm_MR\.csv", os.path.basename(path))
+        if not m or abs(float(m.group(1)) - U) > 1e-9:
+            continue
+        q, h = m.group(2), m.group(3)
+        sim_path = os.path.join(results, f"profile_{q}_z{h}mm.csv")
+        if not os.path.exists(sim_path):
+            print(f"compare.py: no simulated profile {sim_path} for {os.path.basename(path)}")
+            continue
+        _, dx, dy, _ = read_profile(path)
+        _, sx, sy, se = read_profile(sim_path)
+        err = [interp(x, sx, sy) - y for x, y in zip(dx, dy)]
+        rms = math.sqrt(sum(e * e for e in err) / len(err))
+        mx = max(abs(e) for e in err)
+        sem = [e for e in se if not math.isnan(e)]
+        mean_sem = sum(sem) / len(sem) if sem else float("nan")
+        rows.append({"quantity": QUANTITY.get(q, q), "z_mm": h, "rms_error": rms, "max_error": mx,
+                     "mean_batch_sem": mean_sem, "n_points": len(dx)})
+        try:
+            import matplotlib
+            matplotlib.use("Agg")
+            import matplotlib.pyplot as plt
+            fig, ax = plt.subplots(figsize=(5, 3.6))
+            ax.errorbar([x * 1e3 for x in sx], sy, yerr=[2 * e for e in se], fmt="-", capsize=2,
+                        label="simulation (±2 batch SEM)")
+            ax.plot([x * 1e3 for x in dx], dy, "ko", ms=4, label="Müller et al. (MR)")
+            ax.set_xlabel("distance from the left wall (mm)")
+            ax.set_ylabel({"voidfraction": "time-averaged gas fraction", "vz": "time-averaged particle v_z (m/s)"}.get(q, q))
+            ax.set_title(f"U = {U} m/s, z = {h} mm: RMS {rms:.3g}")
+            ax.legend(fontsize=8)
+            fig.tight_layout()
+            fig.savefig(os.path.join(out, f"{q}_z{h}mm.png"), dpi=110)
+            plt.close(fig)
+        except ImportError:
+            pass
+    with open(os.path.join(out, "errors.csv"), "w") as f:
+        f.write("quantity,z_mm,rms_error,max_error,mean_batch_sem,n_points\n")
+        for r in rows:
+            f.write(f"{r['quantity']},{r['z_mm']},{r['rms_error']:.5g},{r['max_error']:.5g},{r['mean_batch_sem']:.3g},{r['n_points']}\n")
+    with open(os.path.join(out, "errors.md"), "w") as f:
+        f.write("| quantity | z (mm) | RMS error | max error | mean batch SEM of the simulation |\n|---|---|---|---|---|\n")
+        for r in rows:
+            f.write(f"| {r['quantity']} | {r['z_mm']} | {r['rms_error']:.4f} | {r['max_error']:.4f} | {r['mean_batch_sem']:.4f} |\n")
+    return rows
+
+if __name__ == "__main__":
+    args = sys.argv[1:]
+    if len(args) < 2:
+        sys.exit(__doc__)
+    U, out = 0.9, None
+    if "-U" in args:
+        i = args.index("-U"); U = float(args[i + 1]); del args[i:i + 2]
+    if "-o" in args:
+        i = args.index("-o"); out = args[i + 1]; del args[i:i + 2]
+    results, data_dir = args[0], args[1]
+    rows = compare(results, data_dir, U, out or os.path.join(results, "comparison"))
+    for r in rows:
+        print(f"{r['quantity']} z={r['z_mm']} mm: RMS {r['rms_error']:.4f}, max {r['max_error']:.4f}")
