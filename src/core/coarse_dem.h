@@ -133,6 +133,22 @@ void cdc_kernels_destroy(cdc_kernels *k);
  * call with CDC_ERR_PARTICLE before anything is written. */
 cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p);
 
+/* ---- parallel: kernels that cross processor boundaries (the caller does the communication)
+ * 1. each rank sends the particles whose kernel reach (cdc_kernels_reach) touches a neighbour's
+ *    mesh to that neighbour, where they are "ghosts";
+ * 2. cdc_kernels_build_raw builds un-normalised weights of the local particles and the ghosts over
+ *    this rank's cells (a ghost needs no host cell here); cdc_kernels_raw_sums gives each one's sum;
+ * 3. the caller adds the sums of every rank (ghost sums go back to the owner) and hands the global
+ *    sums, in the same order, to cdc_kernels_normalise; a particle that got no weight anywhere falls
+ *    back to its host cell (as in serial). The weights are then those of a serial run: alpha_p,
+ *    spreading and gathering over local + ghost particles give the serial result on each rank. */
+cdc_status cdc_kernels_build_raw(cdc_kernels *k, const cdc_particles *local, const cdc_particles *ghosts);
+const double *cdc_kernels_raw_sums(const cdc_kernels *k);
+/* local_ids (may be NULL) name particles in messages */
+cdc_status cdc_kernels_normalise(cdc_kernels *k, const double *global_sums, const int64_t *local_ids);
+/* How far from its centre a particle of this radius reaches with this method (at least the radius). */
+double cdc_kernels_reach(const cdc_kernels *k, double radius);
+
 /* CSR view of the kernels of the last build: particle i has entries offsets[i]..offsets[i+1]-1. */
 int32_t cdc_kernels_count(const cdc_kernels *k);
 const int32_t *cdc_kernels_offsets(const cdc_kernels *k);

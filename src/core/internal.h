@@ -81,6 +81,7 @@ int32_t cdc_next_stamp(cdc_context *ctx);
 typedef struct cdc_kernel_builder {
     cdc_ivec *cells;
     cdc_dvec *weights;
+    int32_t fallback_cell; /* set by a method: the cell that takes the particle if no other does */
 } cdc_kernel_builder;
 
 int cdc_kernel_add(cdc_kernel_builder *b, int32_t cell, double w);
@@ -89,7 +90,8 @@ int cdc_kernel_add(cdc_kernel_builder *b, int32_t cell, double w);
 typedef struct cdc_particle_in {
     double x[3];
     double r;
-    int32_t host;   /* host cell of the centre (>= 0) */
+    int32_t host;   /* host cell of the centre; for a ghost, a local cell to start searches from */
+    int ghost;      /* 1: the particle belongs to another rank, its centre is not in this mesh */
 } cdc_particle_in;
 
 /*
@@ -109,15 +111,20 @@ typedef struct cdc_method {
 
 const cdc_method *cdc_find_method(const char *name);
 
-/* Cells whose centre lies within `radius` of x, found by flood fill from the host cell across
- * faces (the host is always included). When planes != NULL, wall faces of visited cells closer
- * than `radius` to x are collected as mirror planes (deduplicated, at most CDC_MAX_PLANES). */
-cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t host, double radius,
+/* Cells whose centre lies within `radius` of x, found by flood fill from the start cell across
+ * faces. The start cell is included too (the host of a particle), unless seed_only (a ghost's
+ * start cell, included only if it qualifies). When planes != NULL, wall faces of visited cells
+ * closer than `radius` to x are collected as mirror planes (deduplicated, at most CDC_MAX_PLANES). */
+cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t start, int seed_only, double radius,
                             cdc_ivec *cells, cdc_plane *planes, int *n_planes);
 
-/* Cells whose bounding box overlaps the sphere (x, radius), by flood fill from the host. */
-cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t host, double radius,
-                                 cdc_ivec *cells);
+/* Cells whose bounding box overlaps the sphere (x, radius), by flood fill from the start cell. */
+cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t start, int seed_only,
+                                 double radius, cdc_ivec *cells);
+
+/* The local cell whose bounding box is nearest to x, if within `reach` (else -1): where the
+ * searches for a ghost particle start. */
+cdc_status cdc_nearest_cell(cdc_context *ctx, const double x[3], double reach, int32_t *cell);
 
 /* Images of x across the planes (x itself first, then single, double, triple reflections). */
 int cdc_mirror_images(const double x[3], const cdc_plane *planes, int n_planes, double images[][3]);

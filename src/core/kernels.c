@@ -14,7 +14,10 @@ struct cdc_kernels {
     cdc_context *ctx;
     const cdc_method *method;
     cdc_kernel_params prm;
-    int32_t n;                 /* particles of the last build */
+    int32_t n;                 /* particles of the last build (local, then ghosts) */
+    int32_t n_local;           /* of which this rank's own */
+    cdc_dvec raw_sums;         /* per particle: sum of raw weights on this rank (parallel builds) */
+    cdc_ivec fallback_pos;     /* per particle: entry of its fallback cell, or -1 (parallel builds) */
     cdc_ivec offsets, cells;   /* CSR result */
     cdc_dvec weights;
     cdc_ivec raw_cells;        /* one particle's raw entries, before merging */
@@ -72,6 +75,8 @@ void cdc_kernels_destroy(cdc_kernels *k)
     cdc_ivec_free(&k->cells);
     cdc_dvec_free(&k->weights);
     cdc_ivec_free(&k->hosts);
+    cdc_dvec_free(&k->raw_sums);
+    cdc_ivec_free(&k->fallback_pos);
     cdc_ivec_free(&k->raw_cells);
     cdc_dvec_free(&k->raw_weights);
     free(k->slot);
@@ -110,8 +115,8 @@ static cdc_status check_particles(cdc_kernels *k, const cdc_particles *p)
     return CDC_OK;
 }
 
-/* Merge the raw entries of one particle (same cell twice -> one entry) and normalise to sum 1. */
-static cdc_status append_normalised(cdc_kernels *k, int64_t id)
+/* Merge the raw entries of one particle (same cell twice -> one entry); returns their sum. */
+static cdc_status append_merged(cdc_kernels *k, double *raw_sum)
 {
     const int32_t s = ++k->slot_now;
     const size_t start = k->cells.n;
@@ -129,9 +134,31 @@ static cdc_status append_normalised(cdc_kernels *k, int64_t id)
         if (cdc_ivec_push(&k->cells, c) || cdc_dvec_push(&k->weights, w))
             return cdc_fail(k->ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
     }
-    if (!(sum > 0.0) || !isfinite(sum))
-        return cdc_fail(k->ctx, CDC_ERR_KERNEL, "particle %lld: %s kernel has no positive weight",
-                        (long long)id, k->method->name);
+    (void)start;
+    *raw_sum = sum;
+    return CDC_OK;
+}
+
+static cdc_status no_weight(cdc_kernels *k, int64_t id)
+{
+    return cdc_fail(k->ctx, CDC_ERR_KERNEL, "particle %lld: %s kernel has no positive weight", (long long)id,
+                    k->method->name);
+}
+
+/* Serial: merge, fall back to the method's fallback cell when nothing else got weight, normalise. */
+static cdc_status append_normalised(cdc_kernels *k, int64_t id, int32_t fallback)
+{
+    const size_t start = k->cells.n;
+    double sum;
+    cdc_status st = append_merged(k, &sum);
+    if (st != CDC_OK) return st;
+    if (!(sum > 0.0) && fallback >= 0) {
+        k->cells.n = k->weights.n = start;
+        if (cdc_ivec_push(&k->cells, fallback) || cdc_dvec_push(&k->weights, 1.0))
+            return cdc_fail(k->ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
+        return CDC_OK;
+    }
+    if (!(sum > 0.0) || !isfinite(sum)) return no_weight(k, id);
     const double inv = 1.0 / sum;
     for (size_t q = start; q < k->cells.n; ++q) k->weights.v[q] *= inv;
     return CDC_OK;
@@ -183,23 +210,25 @@ cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
     const double t1 = now_seconds();
 
     /* pass 2: kernels */
-    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights};
+    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights, -1};
     for (int32_t i = 0; i < p->n; ++i) {
         cdc_particle_in in = {{p->position[3 * (size_t)i], p->position[3 * (size_t)i + 1],
                                p->position[3 * (size_t)i + 2]},
-                              p->radius[i], k->hosts.v[i]};
+                              p->radius[i], k->hosts.v[i], 0};
         if (in.host < 0) {
             st = record_outside(k, particle_id(p, i));
             if (st != CDC_OK) return st;
         } else {
             k->raw_cells.n = 0;
             k->raw_weights.n = 0;
+            b.fallback_cell = -1;
             st = k->method->build(ctx, &k->prm, &in, &b);
-            if (st == CDC_OK) st = append_normalised(k, particle_id(p, i));
+            if (st == CDC_OK) st = append_normalised(k, particle_id(p, i), b.fallback_cell);
             if (st != CDC_OK) return st;
         }
         k->offsets.v[k->offsets.n++] = (int32_t)k->cells.n;
     }
+    k->n_local = k->n;
     k->seconds_locate = t1 - t0;
     k->seconds_kernel = now_seconds() - t1;
     if (k->n_outside > 0) {
@@ -212,6 +241,107 @@ cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
                         list, k->n_outside > 10 ? " ..." : "");
     }
     return CDC_OK;
+}
+
+cdc_status cdc_kernels_build_raw(cdc_kernels *k, const cdc_particles *local, const cdc_particles *ghosts)
+{
+    if (!k || !local || !ghosts) return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT, "cdc_kernels_build_raw: NULL argument");
+    cdc_context *ctx = k->ctx;
+    /* validity of both sets first: nothing is written on bad input */
+    const cdc_particles *sets[2] = {local, ghosts};
+    for (int s = 0; s < 2; ++s)
+        for (int32_t i = 0; i < sets[s]->n; ++i) {
+            const double *x = sets[s]->position + 3 * (size_t)i;
+            const double r = sets[s]->radius[i];
+            if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2]) || !(r > 0.0) || !isfinite(r))
+                return cdc_fail(ctx, CDC_ERR_PARTICLE, "particle %lld: position (%g %g %g) or radius %g is invalid",
+                                (long long)particle_id(sets[s], i), x[0], x[1], x[2], r);
+        }
+    const int32_t n = local->n + ghosts->n;
+    k->n = n;
+    k->n_local = local->n;
+    k->offsets.n = 1;
+    k->cells.n = k->weights.n = 0;
+    k->n_outside = 0;
+    if (cdc_ivec_reserve(&k->offsets, (size_t)n + 1) || cdc_ivec_reserve(&k->hosts, (size_t)n + 1) ||
+        cdc_dvec_reserve(&k->raw_sums, (size_t)n + 1) || cdc_ivec_reserve(&k->fallback_pos, (size_t)n + 1))
+        return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
+
+    const double t0 = now_seconds();
+    for (int32_t i = 0; i < local->n; ++i) {
+        const int32_t hint = local->host_hint ? local->host_hint[i] : -1;
+        cdc_status st = cdc_locate_point(ctx, local->position + 3 * (size_t)i, hint, &k->hosts.v[i]);
+        if (st != CDC_OK) return st;
+        if (local->host_hint) local->host_hint[i] = k->hosts.v[i];
+    }
+    for (int32_t g = 0; g < ghosts->n; ++g) {
+        const double reach = k->method->reach(&k->prm, ghosts->radius[g]) + ghosts->radius[g];
+        cdc_status st = cdc_nearest_cell(ctx, ghosts->position + 3 * (size_t)g, reach, &k->hosts.v[local->n + g]);
+        if (st != CDC_OK) return st;
+    }
+    const double t1 = now_seconds();
+
+    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights, -1};
+    for (int32_t i = 0; i < n; ++i) {
+        const int ghost = i >= local->n;
+        const cdc_particles *p = ghost ? ghosts : local;
+        const int32_t j = ghost ? i - local->n : i;
+        cdc_particle_in in = {{p->position[3 * (size_t)j], p->position[3 * (size_t)j + 1], p->position[3 * (size_t)j + 2]},
+                              p->radius[j], k->hosts.v[i], ghost};
+        k->raw_sums.v[i] = 0.0;
+        k->fallback_pos.v[i] = -1;
+        if (in.host < 0) {
+            if (!ghost) {
+                cdc_status st = record_outside(k, particle_id(p, j));
+                if (st != CDC_OK) return st;
+            }
+        } else {
+            k->raw_cells.n = 0;
+            k->raw_weights.n = 0;
+            b.fallback_cell = -1;
+            cdc_status st = k->method->build(ctx, &k->prm, &in, &b);
+            if (st == CDC_OK) st = append_merged(k, &k->raw_sums.v[i]);
+            if (st != CDC_OK) return st;
+            if (b.fallback_cell >= 0) { /* weight 0 unless no rank has anything else */
+                k->fallback_pos.v[i] = (int32_t)k->cells.n;
+                if (cdc_ivec_push(&k->cells, b.fallback_cell) || cdc_dvec_push(&k->weights, 0.0))
+                    return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
+            }
+        }
+        k->offsets.v[k->offsets.n++] = (int32_t)k->cells.n;
+    }
+    k->seconds_locate = t1 - t0;
+    k->seconds_kernel = now_seconds() - t1;
+    if (k->n_outside > 0)
+        return cdc_fail(ctx, CDC_ERR_OUTSIDE, "%d particle(s) outside this rank's mesh, first id %lld", (int)k->n_outside,
+                        (long long)k->outside_ids[0]);
+    return CDC_OK;
+}
+
+const double *cdc_kernels_raw_sums(const cdc_kernels *k) { return k ? k->raw_sums.v : NULL; }
+
+cdc_status cdc_kernels_normalise(cdc_kernels *k, const double *global_sums, const int64_t *local_ids)
+{
+    if (!k || (!global_sums && k->n > 0)) return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT, "cdc_kernels_normalise: NULL argument");
+    for (int32_t i = 0; i < k->n; ++i) {
+        const double S = global_sums[i];
+        const int32_t a = k->offsets.v[i], e = k->offsets.v[i + 1];
+        if (S > 0.0 && isfinite(S)) {
+            const double inv = 1.0 / S;
+            for (int32_t q = a; q < e; ++q) k->weights.v[q] *= inv;
+        } else if (k->fallback_pos.v[i] >= 0) {
+            k->weights.v[k->fallback_pos.v[i]] = 1.0;
+        } else if (i < k->n_local && e > a) {
+            return no_weight(k, local_ids ? local_ids[i] : (int64_t)i);
+        }
+    }
+    return CDC_OK;
+}
+
+double cdc_kernels_reach(const cdc_kernels *k, double radius)
+{
+    const double r = k->method->reach(&k->prm, radius);
+    return r > radius ? r : radius;
 }
 
 int32_t cdc_kernels_count(const cdc_kernels *k) { return k ? k->n : 0; }

@@ -168,3 +168,40 @@ cdc_status cdc_locate_point(cdc_context *ctx, const double p[3], int32_t hint, i
     *cell = c;
     return CDC_OK;
 }
+
+cdc_status cdc_nearest_cell(cdc_context *ctx, const double x[3], double reach, int32_t *cell)
+{
+    *cell = -1;
+    if (!ctx->bins_built) {
+        cdc_status st = build_bins(ctx);
+        if (st != CDC_OK) return st;
+    }
+    int32_t lo[3], hi[3];
+    for (int d = 0; d < 3; ++d) {
+        lo[d] = (int32_t)floor((x[d] - reach - ctx->bin_lo[d]) / ctx->bin_size[d]);
+        hi[d] = (int32_t)floor((x[d] + reach - ctx->bin_lo[d]) / ctx->bin_size[d]);
+        if (lo[d] < 0) lo[d] = 0;
+        if (hi[d] >= ctx->nbin[d]) hi[d] = ctx->nbin[d] - 1;
+        if (lo[d] > hi[d]) return CDC_OK; /* the sphere misses this mesh's box */
+    }
+    double best = reach * reach;
+    for (int32_t k = lo[2]; k <= hi[2]; ++k)
+        for (int32_t j = lo[1]; j <= hi[1]; ++j)
+            for (int32_t i = lo[0]; i <= hi[0]; ++i) {
+                const size_t b = ((size_t)k * ctx->nbin[1] + j) * ctx->nbin[0] + i;
+                for (int32_t q = ctx->bin_offsets[b]; q < ctx->bin_offsets[b + 1]; ++q) {
+                    const int32_t c = ctx->bin_cells[q];
+                    const double *bb = ctx->cell_bbox + 6 * (size_t)c;
+                    double d2 = 0.0;
+                    for (int d = 0; d < 3; ++d) {
+                        const double e = x[d] < bb[d] ? bb[d] - x[d] : (x[d] > bb[3 + d] ? x[d] - bb[3 + d] : 0.0);
+                        d2 += e * e;
+                    }
+                    if (d2 <= best) {
+                        best = d2;
+                        *cell = c;
+                    }
+                }
+            }
+    return CDC_OK;
+}

@@ -49,8 +49,8 @@ static void collect_plane(const cdc_mesh *m, int32_t f, const double x[3], doubl
     }
 }
 
-static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, double radius, accept_fn accept,
-                        cdc_ivec *cells, cdc_plane *planes, int *n_planes)
+static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, int seed_only, double radius,
+                        accept_fn accept, cdc_ivec *cells, cdc_plane *planes, int *n_planes)
 {
     const cdc_mesh *m = ctx->mesh;
     const int32_t s = cdc_next_stamp(ctx);
@@ -61,9 +61,10 @@ static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, doubl
     ctx->stamp[host] = s;
     for (size_t head = 0; head < ctx->queue.n; ++head) {
         const int32_t c = ctx->queue.v[head];
-        if (c != host && !accept(ctx, c, x, radius)) continue;
-        if (cdc_ivec_push(cells, c)) return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory in cell search");
-        if (planes && ctx->cell_has_wall[c])
+        const int member = accept(ctx, c, x, radius) || (c == host && !seed_only);
+        if (!member && c != host) continue; /* expand from members and from the start cell */
+        if (member && cdc_ivec_push(cells, c)) return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory in cell search");
+        if (member && planes && ctx->cell_has_wall[c])
             for (int32_t q = ctx->cell_face_offsets[c]; q < ctx->cell_face_offsets[c + 1]; ++q) {
                 const int32_t f = ctx->cell_faces[q];
                 if (f >= m->n_internal_faces &&
@@ -81,16 +82,16 @@ static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, doubl
     return CDC_OK;
 }
 
-cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t host, double radius,
+cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t start, int seed_only, double radius,
                             cdc_ivec *cells, cdc_plane *planes, int *n_planes)
 {
-    return flood(ctx, x, host, radius, centre_within, cells, planes, n_planes);
+    return flood(ctx, x, start, seed_only, radius, centre_within, cells, planes, n_planes);
 }
 
-cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t host, double radius,
-                                 cdc_ivec *cells)
+cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t start, int seed_only,
+                                 double radius, cdc_ivec *cells)
 {
-    return flood(ctx, x, host, radius, box_overlaps, cells, NULL, NULL);
+    return flood(ctx, x, start, seed_only, radius, box_overlaps, cells, NULL, NULL);
 }
 
 static void reflect(const double x[3], const cdc_plane *p, double out[3])

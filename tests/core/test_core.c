@@ -684,6 +684,140 @@ static void test_limiter(void)
     box_mesh_destroy(&b);
 }
 
+
+/* ------------------------------------------------------------------ parallel: ghosts give serial results */
+
+/* The box [0, 24dx] x [0, 10dx] x [0, 8dx] on one mesh (serial) and split at x = 12 dx into two
+ * meshes joined by processor faces. Each "rank" builds raw kernels of its own particles and of the
+ * ghosts whose reach crosses the split; the sums are added as MPI would; after normalising, alpha_p
+ * on each half equals the serial alpha_p to round-off, for every method. (Kernels are kept narrower
+ * than the halves, so no particle reaches both the split and the far x walls: wall planes seen only
+ * by the other rank are a known limit of mirrored kernels in parallel.) */
+static void test_parallel_matches_serial(void)
+{
+    const double dx = 0.01, lo[3] = {0, 0, 0}, hi[3] = {24 * dx, 10 * dx, 8 * dx};
+    const double loA[3] = {0, 0, 0}, hiA[3] = {12 * dx, 10 * dx, 8 * dx};
+    const double loB[3] = {12 * dx, 0, 0}, hiB[3] = {24 * dx, 10 * dx, 8 * dx};
+    const uint8_t kindsA[6] = {CDC_FACE_WALL, CDC_FACE_PROCESSOR, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};
+    const uint8_t kindsB[6] = {CDC_FACE_PROCESSOR, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};
+    box_mesh s, a, b;
+    box_mesh_create(&s, 24, 10, 8, lo, hi, ALL_WALLS, 0.0);
+    box_mesh_create(&a, 12, 10, 8, loA, hiA, kindsA, 0.0);
+    box_mesh_create(&b, 12, 10, 8, loB, hiB, kindsB, 0.0);
+    cdc_context *cs, *ca, *cb;
+    cdc_context_create(&s.mesh, &cs);
+    cdc_context_create(&a.mesh, &ca);
+    cdc_context_create(&b.mesh, &cb);
+    enum { NP = 150 };
+    static double x[3 * NP], r[NP];
+    static int64_t ids[NP];
+    unsigned long long seed = 77;
+    for (int i = 0; i < NP; ++i) {
+        r[i] = dx * (0.3 + 0.5 * rnd(&seed));
+        x[3 * i] = r[i] + (hi[0] - 2 * r[i]) * rnd(&seed);
+        x[3 * i + 1] = r[i] + (hi[1] - 2 * r[i]) * rnd(&seed);
+        x[3 * i + 2] = r[i] + (hi[2] - 2 * r[i]) * rnd(&seed);
+        ids[i] = 1000 + i;
+    }
+    /* straddling the split (not exactly on it: a point on a face belongs to either cell) */
+    for (int i = 0; i < 6; ++i) x[3 * i] = 12 * dx + (i - 2.5) * 0.3 * dx;
+    method_case cases[16];
+    const int nm = method_cases(dx, cases);
+    double worst_all = 0;
+    for (int m = 0; m < nm; ++m) {
+        cdc_kernel_params prm = cases[m].prm;
+        if (strcmp(cases[m].method, "bigParticle") == 0 && prm.expansion_factor > 0) prm.expansion_factor = 3;
+        cdc_kernels *ks, *kA, *kB;
+        cdc_kernels_create(cs, cases[m].method, &prm, &ks);
+        cdc_kernels_create(ca, cases[m].method, &prm, &kA);
+        cdc_kernels_create(cb, cases[m].method, &prm, &kB);
+        cdc_particles all = {NP, x, r, ids, NULL};
+        CHECK(cdc_kernels_build(ks, &all) == CDC_OK, "%s serial: %s", cases[m].method, cdc_last_error(cs));
+        double *alpha_s = malloc(s.mesh.n_cells * sizeof(double));
+        cdc_alpha_p(ks, &all, alpha_s);
+
+        /* distribute: owner by centre; ghost to the other side when the reach crosses the split */
+        static double xo[2][3 * NP], ro[2][NP], xg[2][3 * NP], rg[2][NP];
+        static int64_t io[2][NP], ig[2][NP];
+        int no[2] = {0, 0}, ng[2] = {0, 0};
+        int owner_of_ghost[2][NP];
+        for (int i = 0; i < NP; ++i) {
+            const int own = x[3 * i] < 12 * dx ? 0 : 1, oth = 1 - own;
+            memcpy(xo[own] + 3 * no[own], x + 3 * i, 3 * sizeof(double));
+            ro[own][no[own]] = r[i];
+            io[own][no[own]++] = ids[i];
+            if (fabs(x[3 * i] - 12 * dx) < cdc_kernels_reach(kA, r[i]) + r[i]) {
+                memcpy(xg[oth] + 3 * ng[oth], x + 3 * i, 3 * sizeof(double));
+                rg[oth][ng[oth]] = r[i];
+                ig[oth][ng[oth]] = ids[i];
+                owner_of_ghost[oth][ng[oth]++] = own;
+            }
+        }
+        cdc_kernels *kr[2] = {kA, kB};
+        cdc_particles loc[2], gh[2];
+        for (int q = 0; q < 2; ++q) {
+            loc[q] = (cdc_particles){no[q], xo[q], ro[q], io[q], NULL};
+            gh[q] = (cdc_particles){ng[q], xg[q], rg[q], ig[q], NULL};
+            CHECK(cdc_kernels_build_raw(kr[q], &loc[q], &gh[q]) == CDC_OK, "%s rank %d: %s", cases[m].method, q,
+                  cdc_last_error(q ? cb : ca));
+        }
+        /* global sums: own sum + the ghost copy's sum on the other rank (found by id) */
+        double *sums[2];
+        for (int q = 0; q < 2; ++q) {
+            const double *raw = cdc_kernels_raw_sums(kr[q]);
+            sums[q] = malloc((no[q] + ng[q] + 1) * sizeof(double));
+            for (int i = 0; i < no[q] + ng[q]; ++i) sums[q][i] = raw[i];
+        }
+        for (int q = 0; q < 2; ++q)
+            for (int g = 0; g < ng[q]; ++g) {
+                const int own = owner_of_ghost[q][g];
+                for (int i = 0; i < no[own]; ++i)
+                    if (io[own][i] == ig[q][g]) {
+                        const double total = cdc_kernels_raw_sums(kr[own])[i] + cdc_kernels_raw_sums(kr[q])[no[q] + g];
+                        sums[own][i] = total;
+                        sums[q][no[q] + g] = total;
+                    }
+            }
+        double worst = 0, vol_par = 0, vol_s = 0;
+        for (int q = 0; q < 2; ++q) {
+            CHECK(cdc_kernels_normalise(kr[q], sums[q], io[q]) == CDC_OK, "%s normalise: %s", cases[m].method,
+                  cdc_last_error(q ? cb : ca));
+            double *vols = malloc((no[q] + ng[q] + 1) * sizeof(double));
+            for (int i = 0; i < no[q]; ++i) vols[i] = 4.0 / 3.0 * PI * pow(ro[q][i], 3);
+            for (int g = 0; g < ng[q]; ++g) vols[no[q] + g] = 4.0 / 3.0 * PI * pow(rg[q][g], 3);
+            double *alpha = malloc(a.mesh.n_cells * sizeof(double));
+            cdc_spread(kr[q], vols, 1, alpha);
+            for (int kk = 0; kk < 8; ++kk)
+                for (int j = 0; j < 10; ++j)
+                    for (int i = 0; i < 12; ++i) {
+                        const double ap = alpha[box_mesh_cell(&a, i, j, kk)];
+                        const double as = alpha_s[box_mesh_cell(&s, i + 12 * q, j, kk)];
+                        worst = fmax(worst, fabs(ap - as));
+                        vol_par += ap * a.mesh.cell_volumes[0];
+                    }
+            free(vols);
+            free(alpha);
+            free(sums[q]);
+        }
+        for (int c = 0; c < s.mesh.n_cells; ++c) vol_s += alpha_s[c] * s.mesh.cell_volumes[c];
+        CHECK(worst <= 1e-13, "%s (n=%g mirror=%d): parallel alpha_p differs from serial by %.2e", cases[m].method,
+              prm.expansion_factor, prm.wall_mirror, worst);
+        CHECK(fabs(vol_par - vol_s) <= 1e-13 * vol_s, "%s: parallel volume %.17g serial %.17g", cases[m].method, vol_par, vol_s);
+        worst_all = fmax(worst_all, worst);
+        free(alpha_s);
+        cdc_kernels_destroy(ks);
+        cdc_kernels_destroy(kA);
+        cdc_kernels_destroy(kB);
+    }
+    printf("    largest |alpha_p(np=2) - alpha_p(serial)| over all methods: %.2e\n", worst_all);
+    cdc_context_destroy(cs);
+    cdc_context_destroy(ca);
+    cdc_context_destroy(cb);
+    box_mesh_destroy(&s);
+    box_mesh_destroy(&a);
+    box_mesh_destroy(&b);
+}
+
 /* ------------------------------------------------------------------ bad input */
 
 static void test_bad_input(void)
@@ -788,6 +922,7 @@ int main(void)
     run("diffusion", test_diffusion);
     run("size_aware_diffusion", test_size_aware_diffusion);
     run("limiter", test_limiter);
+    run("parallel_matches_serial", test_parallel_matches_serial);
     run("bad_input", test_bad_input);
     run("method_registry", test_method_registry);
     printf("%d passed, %d failed\n", n_pass, n_fail);

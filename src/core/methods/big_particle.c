@@ -32,7 +32,7 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
         const double radius = prm->expansion_factor * p->r, r2 = radius * radius;
         return cdc_radial_kernel(ctx, p, radius, prm->wall_mirror, cdc_uniform_profile, &r2, out);
     }
-    cdc_status st = cdc_cells_overlapping(ctx, p->x, p->host, p->r, &ctx->near_cells);
+    cdc_status st = cdc_cells_overlapping(ctx, p->x, p->host, p->ghost, p->r, &ctx->near_cells);
     if (st != CDC_OK) return st;
     for (size_t q = 0; q < ctx->near_cells.n; ++q)
         if (cdc_kernel_add(out, ctx->near_cells.v[q], 1.0))

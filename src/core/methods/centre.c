@@ -22,6 +22,7 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
                         cdc_kernel_builder *out)
 {
     (void)prm;
+    if (p->ghost) return CDC_OK; /* the host cell is on the owner's rank */
     if (cdc_kernel_add(out, p->host, 1.0)) return cdc_fail(ctx, CDC_ERR_NOMEM, "centre: out of memory");
     return CDC_OK;
 }

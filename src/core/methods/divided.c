@@ -45,7 +45,8 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     const double r1 = R * cbrt(1.0 / 29.0), r2 = R * cbrt(15.0 / 29.0);
     const double radii[2] = {shell_centroid(r1, r2), shell_centroid(r2, R)};
 
-    if (cdc_kernel_add(out, p->host, 1.0)) return cdc_fail(ctx, CDC_ERR_NOMEM, "divided: out of memory");
+    /* the central marker is in the host cell, which is on the owner's rank for a ghost */
+    if (!p->ghost && cdc_kernel_add(out, p->host, 1.0)) return cdc_fail(ctx, CDC_ERR_NOMEM, "divided: out of memory");
     for (int layer = 0; layer < 2; ++layer)
         for (int k = 0; k < 14; ++k) {
             const double m[3] = {p->x[0] + radii[layer] * dirs[k][0], p->x[1] + radii[layer] * dirs[k][1],

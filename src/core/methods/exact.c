@@ -22,7 +22,7 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
                         cdc_kernel_builder *out)
 {
     (void)prm;
-    cdc_status st = cdc_cells_overlapping(ctx, p->x, p->host, p->r, &ctx->near_cells);
+    cdc_status st = cdc_cells_overlapping(ctx, p->x, p->host, p->ghost, p->r, &ctx->near_cells);
     if (st != CDC_OK) return st;
     const double vol = 4.0 / 3.0 * CDC_PI * p->r * p->r * p->r;
     for (size_t q = 0; q < ctx->near_cells.n; ++q) {

@@ -17,7 +17,7 @@ cdc_status cdc_radial_kernel(cdc_context *ctx, const cdc_particle_in *p, double 
 {
     cdc_plane planes[CDC_MAX_PLANES];
     int n_planes = 0;
-    cdc_status st = cdc_cells_within(ctx, p->x, p->host, radius, &ctx->near_cells,
+    cdc_status st = cdc_cells_within(ctx, p->x, p->host, p->ghost, radius, &ctx->near_cells,
                                      wall_mirror ? planes : NULL, &n_planes);
     if (st != CDC_OK) return st;
 
@@ -36,7 +36,9 @@ cdc_status cdc_radial_kernel(cdc_context *ctx, const cdc_particle_in *p, double 
         ++added;
     }
     /* No cell centre inside the search sphere (a particle much smaller than its cell): the
-     * kernel falls back to the particle centroid method. */
-    if (!added && cdc_kernel_add(out, p->host, 1.0)) return cdc_fail(ctx, CDC_ERR_NOMEM, "kernel: out of memory");
+     * kernel falls back to the particle centroid method. In parallel this is decided when the
+     * ranks' sums are known, so the method only names the cell. */
+    (void)added;
+    if (!p->ghost) out->fallback_cell = p->host;
     return CDC_OK;
 }
