@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""scene_settle.py -- one particle released from rest: its velocity against the ODE of the drag law.
+
+    scene_settle.py <case> <scene> --tol T [--explicit-case C]
+
+    m dv/dt = -(rho_p - rho_f) V g - K(|v|) v,  K = Di Felice at alpha = 1 (as tutorials/settlingTest):
+    K = pi/8 rho_f d^2 (0.63 sqrt|v| + 4.8 sqrt(nu/d))^2 (no added mass: the case has no virtualMassForce).
+
+Measures the particle's vertical velocity in the LIGGGHTS dumps against the ODE (RK4) at the same
+times: the largest deviation over the run relative to the ODE's final speed, and the final velocity
+relative to the ODE's. PASS: the common run checks and the final relative error <= tol, the
+history deviation <= --tol-history (default 2 tol).
+With --stiff: the scene is "particle response time far below the CFD step": reports for the case (and
+the --explicit-case) whether the particle stayed, blew up or was lost, and its final velocity against
+the terminal velocity; PASS only if the case stays within tol of the ODE (i.e. stable and accurate).
+"""
+import argparse, math, os, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import stablib
+
+
+def ode(p, times):
+    d = float(p["D_MM"]) * 1e-3
+    rp, rf, nu, g = float(p["RHO_P"]), float(p["RHO_F"]), float(p["NU_F"]), 9.81
+    V = math.pi / 6 * d ** 3
+    m = rp * V
+    K = lambda u: math.pi / 8 * rf * d * d * (0.63 * math.sqrt(abs(u)) + 4.8 * math.sqrt(nu / d)) ** 2
+    acc = lambda v: (-(rp - rf) * V * g - K(v) * v) / m
+    # terminal velocity by bisection (v < 0)
+    lo, hi = 0.0, 100.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if K(mid) * mid > (rp - rf) * V * g:
+            hi = mid
+        else:
+            lo = mid
+    vt = -0.5 * (lo + hi)
+    tau = m / K(abs(vt))
+    out, v, t, k = [], 0.0, 0.0, 0
+    h = min(1e-5, tau / 50)
+    for T in times:
+        while t < T - 1e-15:
+            hh = min(h, T - t)
+            k1 = acc(v); k2 = acc(v + hh / 2 * k1); k3 = acc(v + hh / 2 * k2); k4 = acc(v + hh * k3)
+            v += hh / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+            t += hh
+        out.append(v)
+    return out, vt, tau
+
+
+def history(case):
+    p = stablib.params(case)
+    dt = float(p["DEM_TIMESTEP"])
+    d = stablib.dumps(case)
+    t, vz = [], []
+    for s, rows in d.items():
+        if rows:
+            r = next(iter(rows.values()))
+            t.append(s * dt)
+            vz.append(r[5])
+    return p, t, vz
+
+
+def assess(case, tol, tol_hist):
+    p, t, vz = history(case)
+    ok, summary, m = stablib.check_run(case, float(p.get("ALPHA_MIN", 0.3)), int(p["N_PARTICLES"]))
+    ref, vt, tau = ode(p, t) if t else ([], float("nan"), float("nan"))
+    ci = int(p["COUPLING_INTERVAL"])
+    dt_cfd = ci * float(p["DEM_TIMESTEP"])
+    res = dict(ok=ok, summary=summary, vt=vt, tau=tau, dt_cfd=dt_cfd, t=t, vz=vz)
+    lost = m.get("particles") and min(m["particles"]) == 0
+    if not t or m["rc"] != 0 or lost:
+        res["state"] = "lost" if lost else "stopped"
+        res["ok"] = False
+        vmax = max((abs(v) for v in vz), default=float("nan"))
+        res["desc"] = "%s (max |v| %.3g m/s = %.3g v_t before)" % (
+            "particle LOST from the DEM box" if lost else "run stopped", vmax, vmax / abs(vt))
+        return res
+    dev = max(abs(a - b) for a, b in zip(vz, ref)) / abs(ref[-1])
+    fin = abs(vz[-1] - ref[-1]) / abs(ref[-1])
+    res["dev"], res["fin"] = dev, fin
+    res["state"] = "stable"
+    res["desc"] = "v_z(end) %.5g m/s vs ODE %.5g m/s (err %.2f %%), history max dev %.2f %% (v_t %.4g m/s)" % (
+        vz[-1], ref[-1], 100 * fin, 100 * dev, vt)
+    res["ok"] = ok and fin <= tol and dev <= tol_hist
+    return res
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("case")
+    ap.add_argument("scene")
+    ap.add_argument("--tol", type=float, required=True, help="final velocity, relative to the ODE's")
+    ap.add_argument("--tol-history", type=float, help="largest deviation over the run / final speed (default 2 tol)")
+    ap.add_argument("--explicit-case")
+    a = ap.parse_args()
+    th = a.tol_history if a.tol_history is not None else 2 * a.tol
+    r = assess(a.case, a.tol, th)
+    line = "dt_CFD/tau_p %.3g (tau_p %.3g s at v_t), %s" % (r["dt_cfd"] / r["tau"], r["tau"], r["desc"])
+    if a.explicit_case:
+        re_ = assess(a.explicit_case, a.tol, th)
+        line = "implicitDrag true: " + line + "; implicitDrag false: " + re_["desc"]
+    line += "; " + r["summary"]
+    print("%s %s: %s" % ("PASS" if r["ok"] else "FAIL", a.scene, line))
+    return 0 if r["ok"] else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

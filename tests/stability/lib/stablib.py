@@ -1,0 +1,232 @@
+"""stablib.py -- reading what a coarseDemFoam run left behind, for the stability suite.
+
+    coupling_lines(case)      the "Coupling: ..." balance lines of log.coarseDemFoam as dicts
+    write_times(case)         written times (serial or processor0), sorted
+    read_scalar_field(case, time, name)   internal field values (all processors concatenated)
+    read_vector_field(case, time, name)   list of (x, y, z)
+    dumps(case)               LIGGGHTS dumps in post/: {step: {id: (x, y, z, vx, vy, vz, r)}}
+    params(case)              case.params written by mkcase.py
+    check_run(case, ...)      the common checks of a solver-level scene: (ok, summary, details)
+"""
+import glob, math, os, re
+
+NUM = r"([-+]?(?:\d+\.?\d*(?:[eE][-+]?\d+)?|nan|inf|-nan|-inf))"
+COUPLING = re.compile(
+    r"Coupling: particles (\d+), solid volume particles " + NUM + r" cells " + NUM +
+    r" \(rel\. err " + NUM + r"\), momentum imbalance " + NUM + r" N of " + NUM +
+    r" N, limiter moved " + NUM + r" m3 in (\d+) cells")
+
+
+def fnum(s):
+    return float(s)
+
+
+def coupling_lines(case, log="log.coarseDemFoam"):
+    out = []
+    with open(os.path.join(case, log), errors="replace") as f:
+        for line in f:
+            m = COUPLING.search(line)
+            if m:
+                g = m.groups()
+                out.append(dict(n=int(g[0]), vp=fnum(g[1]), vc=fnum(g[2]), rel=fnum(g[3]), M=fnum(g[4]),
+                                F=fnum(g[5]), moved=fnum(g[6]), ncells=int(g[7]), end=line.startswith("End:")))
+    return out
+
+
+def params(case):
+    p = {}
+    fn = os.path.join(case, "case.params")
+    if os.path.exists(fn):
+        for line in open(fn):
+            k, _, v = line.rstrip("\n").partition("=")
+            p[k] = v
+    return p
+
+
+def _time_dirs(d):
+    out = []
+    for e in os.listdir(d):
+        try:
+            t = float(e)
+        except ValueError:
+            continue
+        if os.path.isdir(os.path.join(d, e)):
+            out.append((t, e))
+    return sorted(out)
+
+
+def write_times(case):
+    base = os.path.join(case, "processor0") if os.path.isdir(os.path.join(case, "processor0")) else case
+    return _time_dirs(base)
+
+
+def _parse_internal(path, ncomp):
+    s = open(path, errors="replace").read()
+    i = s.find("internalField")
+    s = s[i:]
+    m = re.match(r"internalField\s+uniform\s+(\([^)]*\)|\S+?);", s)
+    if m:
+        v = m.group(1)
+        vals = [float(x) for x in v.strip("()").split()]
+        return ("uniform", vals if ncomp == 3 else vals[0])
+    m = re.match(r"internalField\s+nonuniform\s+List<\w+>\s*(\d+)\s*\(", s)
+    if not m:
+        # zero-size lists are written "List<scalar> 0()"
+        if re.match(r"internalField\s+nonuniform\s+List<\w+>\s*0\s*\(\s*\)", s):
+            return ("list", [])
+        raise ValueError("cannot parse internalField of " + path)
+    n = int(m.group(1))
+    body = s[m.end():]
+    vals = []
+    if ncomp == 1:
+        toks = body.split(None, n)
+        vals = [float(t) for t in toks[:n]]
+    else:
+        for k, mm in enumerate(re.finditer(r"\(([^()]*)\)", body)):
+            if k >= n:
+                break
+            vals.append(tuple(float(t) for t in mm.group(1).split()))
+    return ("list", vals)
+
+
+def _field_paths(case, time, name):
+    procs = sorted(glob.glob(os.path.join(case, "processor*")), key=lambda p: int(p.rsplit("processor", 1)[1]))
+    if procs:
+        return [os.path.join(p, time, name) for p in procs]
+    return [os.path.join(case, time, name)]
+
+
+def read_scalar_field(case, time, name):
+    vals = []
+    for p in _field_paths(case, time, name):
+        kind, v = _parse_internal(p, 1)
+        vals.extend([v] if kind == "uniform" else v)
+    return vals
+
+
+def read_vector_field(case, time, name):
+    vals = []
+    for p in _field_paths(case, time, name):
+        kind, v = _parse_internal(p, 3)
+        vals.extend([tuple(v)] if kind == "uniform" else v)
+    return vals
+
+
+def dumps(case):
+    """post/dump<step>.liggghts (dump custom id x y z vx vy vz radius) -> {step: {id: tuple}}"""
+    out = {}
+    for fn in glob.glob(os.path.join(case, "post", "dump*.liggghts")):
+        with open(fn) as f:
+            lines = f.read().splitlines()
+        step = int(lines[lines.index("ITEM: TIMESTEP") + 1])
+        k = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+        cols = lines[k].split()[2:]
+        rows = {}
+        for l in lines[k + 1:]:
+            t = l.split()
+            if len(t) != len(cols):
+                continue
+            rec = dict(zip(cols, t))
+            rows[int(rec["id"])] = tuple(float(rec[c]) for c in ("x", "y", "z", "vx", "vy", "vz", "radius"))
+        out[step] = rows
+    return dict(sorted(out.items()))
+
+
+def wall_time(case):
+    try:
+        return float(open(os.path.join(case, "wall_time")).read())
+    except (OSError, ValueError):
+        return float("nan")
+
+
+def exit_status(case):
+    try:
+        return int(open(os.path.join(case, "exit_status")).read())
+    except (OSError, ValueError):
+        return -1
+
+
+def log_has_nan(case, log="log.coarseDemFoam"):
+    with open(os.path.join(case, log), errors="replace") as f:
+        for line in f:
+            if re.search(r"(?<![A-Za-z])-?nan(?![A-Za-z])", line, re.I):
+                return line.strip()
+    return None
+
+
+def log_tail(case, n=6, log="log.coarseDemFoam"):
+    try:
+        with open(os.path.join(case, log), errors="replace") as f:
+            lines = [l.rstrip() for l in f if l.strip()]
+        return " | ".join(lines[-n:])
+    except OSError:
+        return "(no log)"
+
+
+def check_run(case, alpha_min, expect_particles=None, rel_tol=1e-12, mom_tol=1e-10):
+    """The common checks: exit 0, balance lines present (at each write and at the end), particle count
+    constant (and as created), solid volume rel. err <= rel_tol, momentum imbalance <= mom_tol x force
+    scale, no NaN in the log, alpha at the last write within [alpha_min, 1] and finite.
+    Returns (ok, summary string, dict of measured values)."""
+    m = {"wall": wall_time(case), "rc": exit_status(case)}
+    problems = []
+    if m["rc"] != 0:
+        dem_err = None
+        try:
+            for line in open(os.path.join(case, "log.liggghts"), errors="replace"):
+                if line.startswith("ERROR"):
+                    dem_err = line.strip()
+        except OSError:
+            pass
+        problems.append("solver exit status %d: %s" % (m["rc"], dem_err or log_tail(case, 4)))
+    cl = coupling_lines(case)
+    m["n_lines"] = len(cl)
+    if not cl:
+        problems.append("no Coupling balance lines in the log")
+    else:
+        counts = sorted(set(c["n"] for c in cl))
+        m["particles"] = counts
+        if len(counts) != 1:
+            problems.append("particle count changed: %s" % counts)
+        if expect_particles is not None and counts[0] != expect_particles:
+            problems.append("%d particles, %d created" % (counts[0], expect_particles))
+        m["rel"] = max(c["rel"] for c in cl)
+        m["mom"] = max((c["M"] / c["F"]) if c["F"] > 0 else (0.0 if c["M"] == 0 else float("inf")) for c in cl)
+        m["moved"] = max(c["moved"] for c in cl)
+        m["limited"] = max(c["ncells"] for c in cl)
+        if not (m["rel"] <= rel_tol):
+            problems.append("solid volume rel. err %.2e > %.0e" % (m["rel"], rel_tol))
+        if not (m["mom"] <= mom_tol):
+            problems.append("momentum imbalance %.2e x force > %.0e" % (m["mom"], mom_tol))
+        if not any(c["end"] for c in cl):
+            problems.append("no End: balance line")
+    nan = log_has_nan(case)
+    if nan:
+        problems.append("NaN in the log: " + nan[:100])
+    times = write_times(case)
+    m["last_time"] = times[-1][1] if times else None
+    if times and times[-1][0] > 0:
+        try:
+            a = read_scalar_field(case, times[-1][1], "alpha")
+            m["alpha_min"], m["alpha_max"] = min(a), max(a)
+            if any(not math.isfinite(x) for x in a):
+                problems.append("non-finite alpha")
+            elif not (m["alpha_min"] >= alpha_min - 1e-12 and m["alpha_max"] <= 1 + 1e-12):
+                problems.append("alpha [%.6g, %.6g] outside [%g, 1]" % (m["alpha_min"], m["alpha_max"], alpha_min))
+        except (OSError, ValueError) as e:
+            problems.append("alpha at t = %s unreadable: %s" % (times[-1][1], e))
+    else:
+        problems.append("no written time after 0")
+    parts = []
+    if "particles" in m:
+        parts.append("particles %s" % ("/".join(str(c) for c in m["particles"])))
+        parts.append("solid volume rel.err max %.1e" % m["rel"])
+        parts.append("momentum imbalance max %.1e x force" % m["mom"])
+        parts.append("limiter moved max %.2e m3 (%d cells)" % (m["moved"], m["limited"]))
+    if "alpha_min" in m:
+        parts.append("alpha_f [%.4f, %.4f] at t=%s" % (m["alpha_min"], m["alpha_max"], m["last_time"]))
+    parts.append("%.0f s" % m["wall"])
+    summary = ", ".join(parts)
+    if problems:
+        summary += "; " + "; ".join(problems)
+    return (not problems), summary, m
