@@ -28,6 +28,7 @@ coarseDemCoupling::coarseDemCoupling
     fluid_{rho.value(), nu.value(), g.value()},
     demMesh_(mesh),
     voidFraction_(dict_, demMesh_),
+    halo_(mesh),
     backgroundKernels_(nullptr),
     needs_(0),
     solidVolumeParticles_(0), solidVolumeCells_(0), momentumImbalance_(0), forceScale_(0),
@@ -152,15 +153,11 @@ void coarseDemCoupling::sampleFluid
     auto gatherVector = [&](const vectorField& field, vectorField& out)
     {
         out.setSize(n);
-        demMesh_.check
-        (
-            cdc_gather(k, reinterpret_cast<const double*>(field.cdata()), 3, reinterpret_cast<double*>(out.data())),
-            "gather"
-        );
+        gather(k, reinterpret_cast<const double*>(field.cdata()), 3, reinterpret_cast<double*>(out.data()));
     };
     gatherVector(U.primitiveField(), state_.Uf);
     state_.alphaf.setSize(n);
-    demMesh_.check(cdc_gather(k, alpha.primitiveField().cdata(), 1, state_.alphaf.data()), "gather");
+    gather(k, alpha.primitiveField().cdata(), 1, state_.alphaf.data());
     if (needs_ & forceModel::needGradP)
     {
         gatherVector(fvc::grad(p)().primitiveField(), state_.gradP);
@@ -183,6 +180,24 @@ void coarseDemCoupling::sampleFluid
     }
 }
 
+void coarseDemCoupling::gather(const cdc_kernels* k, const double* field, int ncomp, double* out)
+{
+    const label n = particles_.size(), ng = ghosts_.size();
+    buffer_.resize(size_t(n + ng)*ncomp);
+    demMesh_.check(cdc_gather(k, field, ncomp, buffer_.data()), "gather");
+    halo_.addToOwners(buffer_.data() + size_t(n)*ncomp, ncomp, buffer_.data());
+    std::copy(buffer_.begin(), buffer_.begin() + size_t(n)*ncomp, out);
+}
+
+void coarseDemCoupling::spread(const double* local, int ncomp, double* out)
+{
+    const label n = particles_.size();
+    halo_.toGhosts(local, ncomp, ghostBuffer_);
+    buffer_.assign(local, local + size_t(n)*ncomp);
+    buffer_.insert(buffer_.end(), ghostBuffer_.begin(), ghostBuffer_.end());
+    demMesh_.check(cdc_spread(voidFraction_.kernels(), buffer_.data(), ncomp, out), "spread");
+}
+
 void coarseDemCoupling::couple
 (
     const volVectorField& U, volScalarField& alpha, const volScalarField& p,
@@ -199,8 +214,22 @@ void coarseDemCoupling::couple
     cdc_particles cp = {int32_t(n), particles_.x.data(), particles_.radius.data(),
                         reinterpret_cast<const int64_t*>(particles_.id.data()), nullptr};
 
+    // ghosts: copies of the neighbours' particles whose kernels reach into this rank's cells
+    timers_.start(stageTimers::exchange);
+    reach_.resize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const double r = particles_.radius[i];
+        reach_[i] = cdc_kernels_reach(voidFraction_.kernels(), r) + r;
+        if (backgroundKernels_) reach_[i] = max(reach_[i], cdc_kernels_reach(backgroundKernels_, r) + r);
+    }
+    halo_.update(particles_, reach_, ghosts_);
+    timers_.stop();
+    const cdc_particles cg = {int32_t(ghosts_.size()), ghosts_.x.data(), ghosts_.radius.data(),
+                              reinterpret_cast<const int64_t*>(ghosts_.id.data()), nullptr};
+
     // kernels and alpha_p
-    voidFraction_.update(cp, alphaP.primitiveFieldRef());
+    voidFraction_.update(cp, cg, halo_, alphaP.primitiveFieldRef());
     double tLocate = 0, tKernel = 0;
     cdc_kernels_timing(voidFraction_.kernels(), &tLocate, &tKernel);
     timers_.add(stageTimers::locate, tLocate);
@@ -212,7 +241,7 @@ void coarseDemCoupling::couple
     if (backgroundKernels_)
     {
         timers_.start(stageTimers::kernel);
-        buildKernels(demMesh_, backgroundKernels_, cp, "background kernels");
+        buildKernels(demMesh_, backgroundKernels_, cp, cg, halo_, "background kernels");
         timers_.stop();
     }
 
@@ -289,16 +318,14 @@ void coarseDemCoupling::couple
     // fluid sources from the same kernels
     timers_.start(stageTimers::exchange);
     dem_->push(force_);
-    const cdc_kernels* k = voidFraction_.kernels();
     const scalar rho = fluid_.rho;
     vectorField q(n);
     if (implicitDrag_)
     {
         scalarField Kr(K_/rho);
-        demMesh_.check(cdc_spread(k, Kr.cdata(), 1, Ksl.primitiveFieldRef().data()), "spread");
+        spread(Kr.cdata(), 1, Ksl.primitiveFieldRef().data());
         forAll(q, i) q[i] = Kr[i]*state_.v[i];
-        demMesh_.check(cdc_spread(k, reinterpret_cast<const double*>(q.cdata()), 3,
-                                  reinterpret_cast<double*>(KslUs.primitiveFieldRef().data())), "spread");
+        spread(reinterpret_cast<const double*>(q.cdata()), 3, reinterpret_cast<double*>(KslUs.primitiveFieldRef().data()));
         forAll(q, i) q[i] = -fReact_[i]/rho;
     }
     else
@@ -307,13 +334,12 @@ void coarseDemCoupling::couple
         KslUs.primitiveFieldRef() = Zero;
         forAll(q, i) q[i] = -(K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i])/rho;
     }
-    demMesh_.check(cdc_spread(k, reinterpret_cast<const double*>(q.cdata()), 3,
-                              reinterpret_cast<double*>(fFluid.primitiveFieldRef().data())), "spread");
+    spread(reinterpret_cast<const double*>(q.cdata()), 3, reinterpret_cast<double*>(fFluid.primitiveFieldRef().data()));
     if (alphaPUs.valid())
     {
         forAll(q, i) q[i] = volume_[i]*state_.v[i];
-        demMesh_.check(cdc_spread(k, reinterpret_cast<const double*>(q.cdata()), 3,
-                                  reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data())), "spread");
+        spread(reinterpret_cast<const double*>(q.cdata()), 3,
+               reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data()));
         alphaPUs().correctBoundaryConditions();
     }
     Ksl.correctBoundaryConditions();

@@ -1,5 +1,6 @@
 #include "voidFraction.H"
 #include "Time.H"
+#include "mathematicalConstants.H"
 
 #include <chrono>
 
@@ -25,9 +26,10 @@ cdc_kernel_params readKernelParams(const dictionary& dict, const word& name)
     return prm;
 }
 
-void buildKernels(const coarseDemMesh& mesh, cdc_kernels* k, const cdc_particles& p, const word& what)
+void buildKernels(const coarseDemMesh& mesh, cdc_kernels* k, const cdc_particles& p, const cdc_particles& ghosts,
+                  const particleHalo& halo, const word& what)
 {
-    const cdc_status st = cdc_kernels_build(k, &p);
+    const cdc_status st = halo.active() ? cdc_kernels_build_raw(k, &p, &ghosts) : cdc_kernels_build(k, &p);
     if (st == CDC_ERR_OUTSIDE)
     {
         FatalErrorInFunction
@@ -37,6 +39,17 @@ void buildKernels(const coarseDemMesh& mesh, cdc_kernels* k, const cdc_particles
             << exit(FatalError);
     }
     mesh.check(st, what);
+    if (halo.active())
+    {
+        // global sums: the ghosts' partial sums go to the owners, the totals come back
+        const double* raw = cdc_kernels_raw_sums(k);
+        std::vector<double> sums(raw, raw + p.n + ghosts.n);
+        halo.addToOwners(sums.data() + p.n, 1, sums.data());
+        std::vector<double> totals;
+        halo.toGhosts(sums.data(), 1, totals);
+        std::copy(totals.begin(), totals.end(), sums.begin() + p.n);
+        mesh.check(cdc_kernels_normalise(k, sums.data(), p.id), what);
+    }
 }
 
 voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
@@ -124,29 +137,45 @@ word voidFraction::smoothingName() const
     }
 }
 
-void voidFraction::update(const cdc_particles& p, scalarField& alphaP)
+void voidFraction::update
+(
+    const cdc_particles& p, const cdc_particles& ghosts, const particleHalo& halo, scalarField& alphaP
+)
 {
     cdc_context* ctx = mesh_.context();
-    buildKernels(mesh_, kernels_, p, "void fraction (" + method_ + ")");
+    buildKernels(mesh_, kernels_, p, ghosts, halo, "void fraction (" + method_ + ")");
     double* a = alphaP.data();
     const auto t0 = std::chrono::steady_clock::now();
+    // particle volumes of the local particles, then of the ghosts
+    const label n = p.n + ghosts.n;
+    volumes_.resize(n);
+    radii_.resize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const double r = i < p.n ? p.radius[i] : ghosts.radius[i - p.n];
+        radii_[i] = r;
+        volumes_[i] = 4.0/3.0*constant::mathematical::pi*r*r*r;
+    }
     switch (smoothing_)
     {
         case smoothing::off:
-            mesh_.check(cdc_alpha_p(kernels_, &p, a), "alpha_p");
+            mesh_.check(cdc_spread(kernels_, volumes_.data(), 1, a), "alpha_p");
             break;
         case smoothing::diffusion:
-            mesh_.check(cdc_alpha_p(kernels_, &p, a), "alpha_p");
+            mesh_.check(cdc_spread(kernels_, volumes_.data(), 1, a), "alpha_p");
             mesh_.check(cdc_diffuse(ctx, &diffusion_, a), "diffusion smoothing");
             break;
         case smoothing::sizeAware:
         {
-            int n = 0;
+            int nc = 0;
+            // the classes need every particle that has a kernel here: local ones and ghosts
+            cdc_particles all = {int32_t(n), nullptr, radii_.data(), nullptr, nullptr};
             mesh_.check
             (
-                cdc_alpha_p_diffused_by_size(ctx, kernels_, &p, bandwidthOverD_, classRatio_, &diffusion_, a, &n),
+                cdc_alpha_p_diffused_by_size(ctx, kernels_, &all, bandwidthOverD_, classRatio_, &diffusion_, a, &nc),
                 "size-aware diffusion smoothing"
             );
+            const int n = nc;
             nClasses_ = n;
             break;
         }

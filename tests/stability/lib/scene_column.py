@@ -34,6 +34,7 @@ def main():
     ap.add_argument("--co-range", type=float, nargs=2)
     ap.add_argument("--skip-co", type=int, default=0, help="ignore the first N Courant numbers (adjustTimeStep)")
     ap.add_argument("--reference", help="a case of the same scene with other settings: bed mean z compared")
+    ap.add_argument("--max-diff", type=float, help="with --reference: the bed rises must agree to this fraction")
     a = ap.parse_args()
     p = stablib.params(a.case)
     n0 = int(p["N_PARTICLES"]) if "N_PARTICLES" in p else None
@@ -59,9 +60,16 @@ def main():
             if match:
                 zr0, zr1 = zmean(dr[min(dr)]), zmean(dr[match[0]])
                 rise, rise_r = zmean(last) - zmean(first), zr1 - zr0
-                extra.append("bed rise %.3f mm vs %.3f mm with couplingInterval %s (difference %.0f %%)" %
-                             (1e3 * rise, 1e3 * rise_r, pr["COUPLING_INTERVAL"],
-                              100 * abs(rise - rise_r) / max(abs(rise_r), 1e-12)))
+                diff = abs(rise - rise_r) / max(abs(rise_r), 1e-12)
+                extra.append("bed rise %.4f mm vs %.4f mm with couplingInterval %s x DEM step %s s (difference %.1f %%)" %
+                             (1e3 * rise, 1e3 * rise_r, pr["COUPLING_INTERVAL"], pr["DEM_TIMESTEP"], 100 * diff))
+                if a.max_diff is not None and diff > a.max_diff:
+                    ok = False
+                    extra.append("differs by more than %.0f %%" % (100 * a.max_diff))
+            else:
+                extra.append("no reference dump at t = %g s" % t_end)
+                if a.max_diff is not None:
+                    ok = False
     co = courant(a.case)[a.skip_co:]
     if co:
         extra.append("Co max %.3f" % max(co))
