@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+"""Error against run time for the Mueller-bed runs of every model.
+
+    summary.py <out dir> <run dir> [<run dir> ...]
+
+For each run (tutorials/fluidizedBedMuller/runs/<model>_dx<..>_U<..>_<mode>): the RMS errors from
+results/comparison/errors.csv (compare.py), the wall time (sum of wall_seconds.txt, one line per
+start or restart) and the coupling share of it from the solver's last stage-timer line (locate,
+kernel, smoothing incl. the packing limiter, forces, exchange over all stages). Copies each run's
+profile CSVs and comparison plots to <out>/<run>/ and writes <out>/error_vs_runtime.{csv,md,png}.
+"""
+import glob, os, re, shutil, sys
+
+def stage_times(log):
+    last = None
+    for line in open(log, errors="replace"):
+        if line.startswith("Stage timers"):
+            last = line
+    if not last:
+        return None
+    return {m.group(1): float(m.group(2)) for m in re.finditer(r"(\w+) ([0-9.eE+-]+) \(", last)}
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    out, runs = sys.argv[1], sys.argv[2:]
+    os.makedirs(out, exist_ok=True)
+    rows = []
+    for run in runs:
+        name = os.path.basename(os.path.normpath(run))
+        errs = {}
+        path = os.path.join(run, "results", "comparison", "errors.csv")
+        if not os.path.exists(path):
+            print(f"summary.py: {name}: no comparison yet, skipped")
+            continue
+        for line in open(path).read().split("\n")[1:]:
+            if line:
+                q, z, rms, mx, sem, n = line.split(",")
+                errs[(q, z)] = (float(rms), float(mx), float(sem))
+        wall = sum(float(l) for l in open(os.path.join(run, "wall_seconds.txt")) if l.strip())
+        st = stage_times(os.path.join(run, "log.coarseDemFoam")) or {}
+        total = sum(st.values()) or float("nan")
+        coupling = sum(st.get(k, 0) for k in ("locate", "kernel", "smoothing", "forces", "exchange"))
+        info = open(os.path.join(run, "results", "profiles_info.txt")).readline().strip()
+        rows.append(dict(run=name, model=name.split("_")[0], wall=wall, coupling_share=coupling / total,
+                         fluid_share=st.get("fluid", 0) / total, dem_share=st.get("DEM", 0) / total,
+                         void_rms=errs.get(("void_fraction", "16.4"), (float("nan"),) * 3)[0],
+                         void_sem=errs.get(("void_fraction", "16.4"), (float("nan"),) * 3)[2],
+                         vz_rms=errs.get(("vz_particle_m_per_s", "15"), (float("nan"),) * 3)[0],
+                         vz_sem=errs.get(("vz_particle_m_per_s", "15"), (float("nan"),) * 3)[2], window=info))
+        dest = os.path.join(out, name)
+        os.makedirs(dest, exist_ok=True)
+        for f in glob.glob(os.path.join(run, "results", "*.csv")) + glob.glob(os.path.join(run, "results", "*.txt")):
+            shutil.copy(f, dest)
+        for f in glob.glob(os.path.join(run, "results", "comparison", "*")):
+            shutil.copy(f, dest)
+    with open(os.path.join(out, "error_vs_runtime.csv"), "w") as f:
+        f.write("run,model,wall_time_s,coupling_share,fluid_share,dem_share,voidfraction_z16.4_rms,voidfraction_z16.4_mean_sem,vz_z15_rms_m_per_s,vz_z15_mean_sem\n")
+        for r in rows:
+            f.write(f"{r['run']},{r['model']},{r['wall']:.0f},{r['coupling_share']:.3f},{r['fluid_share']:.3f},{r['dem_share']:.3f},"
+                    f"{r['void_rms']:.4f},{r['void_sem']:.4f},{r['vz_rms']:.4f},{r['vz_sem']:.4f}\n")
+    with open(os.path.join(out, "error_vs_runtime.md"), "w") as f:
+        f.write("| run | wall time (s) | coupling share | gas fraction RMS, z = 16.4 mm | particle v_z RMS, z = 15 mm (m/s) |\n|---|---|---|---|---|\n")
+        for r in rows:
+            f.write(f"| {r['run']} | {r['wall']:.0f} | {100*r['coupling_share']:.1f} % | {r['void_rms']:.3f} (SEM {r['void_sem']:.3f}) | {r['vz_rms']:.3f} (SEM {r['vz_sem']:.3f}) |\n")
+        if rows:
+            f.write(f"\nAveraging window: {rows[0]['window']}\n")
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+        for r in rows:
+            ax[0].plot(r["wall"], r["void_rms"], "o"); ax[0].annotate(r["model"], (r["wall"], r["void_rms"]))
+            ax[1].plot(100 * r["coupling_share"], r["void_rms"], "o"); ax[1].annotate(r["model"], (100 * r["coupling_share"], r["void_rms"]))
+        ax[0].set_xlabel("wall time (s)"); ax[1].set_xlabel("coupling share of the wall time (%)")
+        for a in ax:
+            a.set_ylabel("gas fraction RMS error, z = 16.4 mm")
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "error_vs_runtime.png"), dpi=110)
+    except ImportError:
+        print("summary.py: matplotlib missing, no PNG")
+    for r in rows:
+        print(f"{r['run']}: wall {r['wall']:.0f} s, coupling {100*r['coupling_share']:.1f} %, void RMS {r['void_rms']:.4f}, vz RMS {r['vz_rms']:.4f}")
+
+main()
