@@ -1,4 +1,5 @@
 #include "coarseDemCoupling.H"
+#include "demTimeStepCheck.H"
 #include "fvc.H"
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
@@ -122,6 +123,7 @@ coarseDemCoupling::coarseDemCoupling
     }
 
     dem_.reset(new liggghtsDem(mesh, dict_));
+    checkDemTimestep(dem_->lammps(), dict_);   // vs Rayleigh and Hertz times: warn / stop
 
     Info<< "coarseDemCoupling: model " << modelType << ", voidFractionModel " << voidFraction_.method()
         << ", smoothing " << voidFraction_.smoothingName() << ", background fields "

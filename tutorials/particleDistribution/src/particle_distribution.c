@@ -334,7 +334,8 @@ int main(int argc, char **argv)
                         t, kmid, zmid, md.ny, m->cell_centres[1] / D, md.nx, m->cell_centres[0] / D, dx_over_d);
                 for (int j = 0; j < md.ny; ++j)
                     for (int i = 0; i < md.nx; ++i)
-                        fprintf(ff, "%.5g%c", alpha[box_mesh_cell(&b, i, j, kmid)], i + 1 < md.nx ? ',' : '\n');
+                        /* full precision: tests compare this field with the solver's to round-off */
+                        fprintf(ff, "%.17g%c", alpha[box_mesh_cell(&b, i, j, kmid)], i + 1 < md.nx ? ',' : '\n');
                 fclose(ff);
             }
         }
