@@ -133,6 +133,8 @@ def main():
             if not (0 <= x <= W_m and 0 <= y <= W_m and 0 <= z <= H_m):
                 sys.exit("mkcase.py: particle (%g %g %g) outside the box" % (x, y, z))
             f.write("create_atoms 1 single %s %s %s units box\n" % (fmt(x), fmt(y), fmt(z)))
+        if pts:
+            f.write("set group all diameter %s density %s\n" % (v["DIAMETER_M"], v["RHO_P"]))
     os.makedirs(os.path.join(case, "post"), exist_ok=True)
     with open(os.path.join(case, "case.params"), "w") as f:
         for k in sorted(v):

@@ -2,12 +2,13 @@
 """scene_contact.py -- stiff contact (E = 1e9 Pa): the DEM time-step check and binary collisions.
 
     scene_contact.py times E nu rho d v          print t_R, t_H (the reference formulas, for the runner)
-    scene_contact.py dtcheck <case> <scene> <quiet|warn|fatal>
+    scene_contact.py dtcheck <case> <scene> <quiet|warn|fatal|skip>
         <case>/log.dt is the output of dtCheckTest (checkDemTimestep on the case's DEM script and
         couplingProperties). PASS if (a) the printed estimate equals this script's independent
         t_R and t_H to 1e-5, (b) the outcome is the expected one: no warning / a warning naming
         demTimeStepWarnFraction / a FatalIOError naming the couplingProperties file,
         demTimeStepMaxFraction and demTimeStepForce (and the run stopped with a non-zero status).
+        "skip": no particles in the DEM yet: a warning that the step was not checked, exit 0.
     scene_contact.py collision <dir> <scene> <E> <dt> <ok|refused> [<dtcheck outcome>]
         <dir>/post/collision.txt from in.collision (two spheres head on at 1 m/s). Measures the
         restitution coefficient (set 0.9), the contact duration against t_H and the largest overlap
@@ -41,6 +42,16 @@ def dtcheck(case, scene, expect):
         print("FAIL %s: no ESTIMATE line from dtCheckTest (exit %d): %s" % (scene, rc, log.strip()[-300:]))
         return 1
     dt, tR, tH, v, n, rmin, rhomin, rhomax, Emax = (float(x) for x in m.groups()[:9])
+    valid = m.group(10) == "1"
+    if expect == "skip":
+        # no particles (or no materials): a warning that the step was not checked, no stop
+        got = "skip" if (not valid and "not checked against the Rayleigh and Hertz times" in log) else \
+            ("fatal" if "FOAM FATAL" in log else "other")
+        reason = re.search(r"Hertz times: (.*)", log)
+        ok = got == "skip" and rc == 0
+        print("%s %s: %d particles -> %s (expected skip, exit %d): %s" % ("PASS" if ok else "FAIL", scene, n, got, rc,
+                                                                      reason.group(1).strip() if reason else log[-200:]))
+        return 0 if ok else 1
     params = dict(l.rstrip("\n").split("=", 1) for l in open(os.path.join(case, "case.params")) if "=" in l)
     E, rho, d = float(params["YOUNGS_MODULUS"]), float(params["RHO_P"]), float(params["D_MM"]) * 1e-3
     tR_ref, tH_ref, _ = times(E, 0.3, rho, d, float(params["DEM_MAX_IMPACT_VELOCITY"]))
