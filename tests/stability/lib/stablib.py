@@ -163,6 +163,21 @@ def log_tail(case, n=6, log="log.coarseDemFoam"):
         return "(no log)"
 
 
+def failure_reason(case, log="log.coarseDemFoam"):
+    """The message of a failed run: the FOAM FATAL ERROR text, a floating point exception, or the tail."""
+    try:
+        lines = [l.rstrip() for l in open(os.path.join(case, log), errors="replace")]
+    except OSError:
+        return "(no log)"
+    for i, l in enumerate(lines):
+        if "FOAM FATAL" in l:
+            msg = [re.sub(r"^\[\d+\] ?", "", x).strip() for x in lines[i + 1:i + 4]]
+            return "FATAL ERROR: " + " ".join(x for x in msg if x)[:300]
+    if any("sigFpe" in l for l in lines):
+        return "floating point exception (SIGFPE)"
+    return log_tail(case, 4)
+
+
 def check_run(case, alpha_min, expect_particles=None, rel_tol=1e-12, mom_tol=1e-10):
     """The common checks: exit 0, balance lines present (at each write and at the end), particle count
     constant (and as created), solid volume rel. err <= rel_tol, momentum imbalance <= mom_tol x force
@@ -178,7 +193,7 @@ def check_run(case, alpha_min, expect_particles=None, rel_tol=1e-12, mom_tol=1e-
                     dem_err = line.strip()
         except OSError:
             pass
-        problems.append("solver exit status %d: %s" % (m["rc"], dem_err or log_tail(case, 4)))
+        problems.append("solver exit status %d: %s" % (m["rc"], dem_err or failure_reason(case)))
     cl = coupling_lines(case)
     m["n_lines"] = len(cl)
     if not cl:
