@@ -2,14 +2,7 @@
  * centre -- particle centroid method (PCM): the whole particle volume goes to its host cell.
  * The classic CFDEM "centre" model; spikes once particles are as large as the cells.
  */
-#include "../internal.h"
-
-static cdc_status check(cdc_context *ctx, const cdc_kernel_params *prm)
-{
-    (void)ctx;
-    (void)prm;
-    return CDC_OK;
-}
+#include "common.h"
 
 static double reach(const cdc_kernel_params *prm, double r)
 {
@@ -27,4 +20,4 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return CDC_OK;
 }
 
-const cdc_method cdc_method_centre = {"centre", check, reach, build};
+const cdc_method cdc_method_centre = {"centre", cdc_check_no_params, reach, build};

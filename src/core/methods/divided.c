@@ -8,22 +8,9 @@
  * diagonals). The weight of a cell is the share of markers it holds. Markers outside the mesh
  * (a particle through a wall) are dropped and the rest renormalised, so volume is conserved.
  */
-#include "../internal.h"
+#include "common.h"
 
 #include <math.h>
-
-static cdc_status check(cdc_context *ctx, const cdc_kernel_params *prm)
-{
-    (void)ctx;
-    (void)prm;
-    return CDC_OK;
-}
-
-static double reach(const cdc_kernel_params *prm, double r)
-{
-    (void)prm;
-    return r;
-}
 
 /* Centroid radius of a shell r_a..r_b: int r^3 dr / int r^2 dr = 3/4 (r_b^4 - r_a^4)/(r_b^3 - r_a^3).
  * (Eq. 3 of the paper prints this with the factors garbled; this is the centroid it defines.) */
@@ -60,4 +47,4 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return CDC_OK;
 }
 
-const cdc_method cdc_method_divided = {"divided", check, reach, build};
+const cdc_method cdc_method_divided = {"divided", cdc_check_no_params, cdc_reach_radius, build};

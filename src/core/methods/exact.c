@@ -3,20 +3,7 @@
  * cells, computed by cdc_sphere_box_volume to ~1e-12. The part of a particle beyond the mesh
  * (through a wall) is renormalised away so volume is conserved, like every other method.
  */
-#include "../internal.h"
-
-static cdc_status check(cdc_context *ctx, const cdc_kernel_params *prm)
-{
-    (void)ctx;
-    (void)prm;
-    return CDC_OK;
-}
-
-static double reach(const cdc_kernel_params *prm, double r)
-{
-    (void)prm;
-    return r;
-}
+#include "common.h"
 
 static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cdc_particle_in *p,
                         cdc_kernel_builder *out)
@@ -39,4 +26,4 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return CDC_OK;
 }
 
-const cdc_method cdc_method_exact = {"exact", check, reach, build};
+const cdc_method cdc_method_exact = {"exact", cdc_check_no_params, cdc_reach_radius, build};
