@@ -1,6 +1,7 @@
 #include "liggghtsDem.H"
 #include "Time.H"
 #include "OSspecific.H"
+#include "Pstream.H"
 
 #include <mpi.h>
 
@@ -85,6 +86,14 @@ void Foam::liggghtsDem::command(const std::string& line)
 void Foam::liggghtsDem::run(label nSteps)
 {
     command("run " + std::to_string(nSteps) + " pre no post no");
+    if (Pstream::parRun())
+    {
+        // LIGGGHTS moves a particle to the rank of its new sub-domain only when it rebuilds its
+        // neighbour lists; until then a particle that crossed the processor plane is still held by
+        // the old rank, outside that rank's part of the CFD mesh. A zero-step run with setup
+        // migrates every particle to its owner (one neighbour-list build per coupling step).
+        command("run 0 pre yes post no");
+    }
 }
 
 void Foam::liggghtsDem::pull(demParticles& p) const
