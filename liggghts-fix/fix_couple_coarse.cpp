@@ -151,14 +151,9 @@ void FixCoupleCoarse::post_force(int)
   const int n = atom->nlocal;
   for (int i = 0; i < n; i++) {
     if (mask[i] & groupbit) {
-      // stored force + drag K (u_fluid - v) with the particle's velocity of this step: the
-      // drag relaxes with the DEM step, stable even when the CFD step exceeds the particle
-      // response time (a constant drag force over the coupling interval would overshoot)
-      const double *c = fcoupling_[i];
-      double **v = atom->v;
-      f[i][0] += c[0] + c[3]*(c[4] - v[i][0]);
-      f[i][1] += c[1] + c[3]*(c[5] - v[i][1]);
-      f[i][2] += c[2] + c[3]*(c[6] - v[i][2]);
+      f[i][0] += fcoupling_[i][0];
+      f[i][1] += fcoupling_[i][1];
+      f[i][2] += fcoupling_[i][2];
     }
   }
 }
@@ -190,37 +185,45 @@ double FixCoupleCoarse::memory_usage()
 
 void FixCoupleCoarse::grow_arrays(int nmax)
 {
-  memory->grow(fcoupling_, nmax, NDATA, "fix_couple_coarse:fcoupling");
+  memory->grow(fcoupling_, nmax, 3, "fix_couple_coarse:fcoupling");
 }
 
 void FixCoupleCoarse::copy_arrays(int i, int j, int)
 {
-  for (int d = 0; d < NDATA; d++) fcoupling_[j][d] = fcoupling_[i][d];
+  fcoupling_[j][0] = fcoupling_[i][0];
+  fcoupling_[j][1] = fcoupling_[i][1];
+  fcoupling_[j][2] = fcoupling_[i][2];
 }
 
 void FixCoupleCoarse::set_arrays(int i)
 {
-  for (int d = 0; d < NDATA; d++) fcoupling_[i][d] = 0.0;
+  fcoupling_[i][0] = fcoupling_[i][1] = fcoupling_[i][2] = 0.0;
 }
 
 int FixCoupleCoarse::pack_exchange(int i, double *buf)
 {
-  for (int d = 0; d < NDATA; d++) buf[d] = fcoupling_[i][d];
+  buf[0] = fcoupling_[i][0];
+  buf[1] = fcoupling_[i][1];
+  buf[2] = fcoupling_[i][2];
   return 3;
 }
 
 int FixCoupleCoarse::unpack_exchange(int nlocal, double *buf)
 {
-  for (int d = 0; d < NDATA; d++) fcoupling_[nlocal][d] = buf[d];
-  return NDATA;
+  fcoupling_[nlocal][0] = buf[0];
+  fcoupling_[nlocal][1] = buf[1];
+  fcoupling_[nlocal][2] = buf[2];
+  return 3;
 }
 
-// restart record per atom: [length = NDATA + 1, fx, fy, fz, K, ux, uy, uz]
+// restart record per atom: [length=4, fx, fy, fz]
 int FixCoupleCoarse::pack_restart(int i, double *buf)
 {
-  buf[0] = NDATA + 1;
-  for (int d = 0; d < NDATA; d++) buf[1 + d] = fcoupling_[i][d];
-  return NDATA + 1;
+  buf[0] = 4;
+  buf[1] = fcoupling_[i][0];
+  buf[2] = fcoupling_[i][1];
+  buf[3] = fcoupling_[i][2];
+  return 4;
 }
 
 void FixCoupleCoarse::unpack_restart(int nlocal, int nth)
@@ -230,17 +233,19 @@ void FixCoupleCoarse::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
   m++;
-  for (int d = 0; d < NDATA; d++) fcoupling_[nlocal][d] = extra[nlocal][m++];
+  fcoupling_[nlocal][0] = extra[nlocal][m++];
+  fcoupling_[nlocal][1] = extra[nlocal][m++];
+  fcoupling_[nlocal][2] = extra[nlocal][m++];
 }
 
 int FixCoupleCoarse::size_restart(int)
 {
-  return NDATA + 1;
+  return 4;
 }
 
 int FixCoupleCoarse::maxsize_restart()
 {
-  return NDATA + 1;
+  return 4;
 }
 
 /* ----------------------------------------------------------------------
@@ -314,25 +319,9 @@ void FixCoupleCoarse::push_forces(const double *f)
     fcoupling_[i][0] = f[3*k];
     fcoupling_[i][1] = f[3*k+1];
     fcoupling_[i][2] = f[3*k+2];
-    fcoupling_[i][3] = 0.0;   // no drag part until push_drag()
     k++;
   }
   npush_++;
-}
-
-void FixCoupleCoarse::push_drag(const double *K, const double *ufluid)
-{
-  if (npulled_ <= 0 && atom->nlocal > 0 && pull_step_ < 0)
-    error->one(FLERR, "Fix couple/coarse: push_drag() without a preceding pull()");
-  int k = 0;
-  for (int i = 0; i < atom->nlocal && k < npulled_; i++) {
-    if (!in_group(i)) continue;
-    fcoupling_[i][3] = K[k];
-    fcoupling_[i][4] = ufluid[3*k];
-    fcoupling_[i][5] = ufluid[3*k+1];
-    fcoupling_[i][6] = ufluid[3*k+2];
-    k++;
-  }
 }
 
 void FixCoupleCoarse::total_force(double out[3]) const
@@ -340,10 +329,8 @@ void FixCoupleCoarse::total_force(double out[3]) const
   out[0] = out[1] = out[2] = 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!in_group(i)) continue;
-    const double *c = fcoupling_[i];
-    double **v = atom->v;
-    out[0] += c[0] + c[3]*(c[4] - v[i][0]);
-    out[1] += c[1] + c[3]*(c[5] - v[i][1]);
-    out[2] += c[2] + c[3]*(c[6] - v[i][2]);
+    out[0] += fcoupling_[i][0];
+    out[1] += fcoupling_[i][1];
+    out[2] += fcoupling_[i][2];
   }
 }

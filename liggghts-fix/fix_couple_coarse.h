@@ -70,17 +70,9 @@ in the fix group, in LIGGGHTS' local atom order at the time of the call):
         x, v: 3*nlocal() values (x0 y0 z0 x1 ...); radius, density, type,
         id: nlocal() values. Any pointer may be NULL to skip that quantity.
    void push_forces(const double *f);
-  void push_drag(const double *K, const double *ufluid);
         3*nlocal() values, per particle in the order of the last pull().
         Must be called before the next DEM step after the pull (the local
         order changes during a run).
-   void push_drag(const double *K, const double *ufluid);
-        optional, after push_forces(): per particle a drag coefficient K (kg/s,
-        nlocal() values) and the fluid velocity at the particle (3*nlocal()
-        values); every DEM step until the next push the particle then gets
-        K (u_fluid - v) with its current velocity v, in addition to the pushed
-        force. This keeps drag stable when the coupling interval is longer
-        than the particle response time m/K. push_forces() clears it.
    void total_force(double out[3]) const;
         sum of the stored coupling force over the local particles (no MPI
         communication); for momentum balance checks.
@@ -141,7 +133,6 @@ class FixCoupleCoarse : public Fix {
   int nlocal() const;
   void pull(double *x, double *v, double *radius, double *density, int *type, long long *id);
   void push_forces(const double *f);
-  void push_drag(const double *K, const double *ufluid);
   void total_force(double out[3]) const;
 
   // number of pull() and push_forces() calls so far (for diagnostics)
@@ -149,10 +140,7 @@ class FixCoupleCoarse : public Fix {
   long long n_pushes() const { return npush_; }
 
  private:
-  // per-atom stored coupling data, [atom->nmax][NDATA]: force (3), drag coefficient K, fluid
-  // velocity (3); post_force adds force + K (u_fluid - v)
-  enum { NDATA = 7 };
-  double **fcoupling_;
+  double **fcoupling_;   // per-atom stored coupling force, [atom->nmax][3]
   int apply_;            // 1: add fcoupling_ to f in post_force
   int check_order_;      // 1: push_forces checks that atoms are those of the last pull
 

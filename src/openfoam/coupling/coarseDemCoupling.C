@@ -305,22 +305,13 @@ void coarseDemCoupling::couple
             if (fm.reactsOnFluid(modelB_)) fReact_ += fi;
         }
     }
-    // The DEM gets the non-drag forces as a force and the drag as K and u_f: it applies
-    // K (u_f - v) with the particle's velocity at every DEM step (stable for any coupling interval).
     force_.resize(3*n);
-    dragK_.resize(n);
-    dragUf_.resize(3*n);
     forceScale_ = 0;
     vector fParticles(Zero);
     for (label i = 0; i < n; ++i)
     {
         const vector f = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
-        for (direction d = 0; d < 3; ++d)
-        {
-            force_[3*i + d] = fOther_[i][d];
-            dragUf_[3*i + d] = state_.Uf[i][d];
-        }
-        dragK_[i] = K_[i];
+        for (direction d = 0; d < 3; ++d) force_[3*i + d] = f[d];
         fParticles += K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i];
         forceScale_ += mag(f);
     }
@@ -329,7 +320,6 @@ void coarseDemCoupling::couple
     // fluid sources from the same kernels
     timers_.start(stageTimers::exchange);
     dem_->push(force_);
-    dem_->pushDrag(dragK_, dragUf_);
     const scalar rho = fluid_.rho;
     vectorField q(n);
     if (implicitDrag_)

@@ -41,9 +41,13 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     //   if "${restarting} == 1" then "read_restart ${restart}" else "read_restart DEM/init.restart"
     const fileName restartFile = caseDir/mesh.time().timeName()/"dem.restart";
     const std::string restart = isFile(restartFile) ? std::string(restartFile) : std::string("none");
+    // COARSEDEM_DEM_SCREEN=1 keeps LIGGGHTS' screen output on stdout (for debugging DEM errors)
     std::vector<std::string> args =
-        {"liggghts", "-screen", "none", "-log", logFile, "-var", "restart", restart,
-         "-var", "restarting", restart == "none" ? "0" : "1"};
+        {"liggghts", "-log", logFile, "-var", "restart", restart, "-var", "restarting", restart == "none" ? "0" : "1"};
+    if (getEnv("COARSEDEM_DEM_SCREEN").empty())
+    {
+        args.insert(args.begin() + 1, {"-screen", "none"});
+    }
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(&a[0]);
     lmp_ = new LAMMPS_NS::LAMMPS(int(argv.size()), argv.data(), MPI_COMM_WORLD);
@@ -111,9 +115,4 @@ void Foam::liggghtsDem::pull(demParticles& p) const
 void Foam::liggghtsDem::push(const std::vector<double>& f)
 {
     fix_->push_forces(f.data());
-}
-
-void Foam::liggghtsDem::pushDrag(const std::vector<double>& K, const std::vector<double>& uf)
-{
-    fix_->push_drag(K.data(), uf.data());
 }
