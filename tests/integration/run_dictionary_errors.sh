@@ -59,6 +59,10 @@ check particle_outside '' "1 particle(s) outside the mesh, ids: 2001" \
     "sed -i 's/0 0.011 0 0.011 0 0.055 units box/0 0.011 0 0.011 0 0.08 units box/; s/^fix *cfd.*/create_atoms 1 single 0.005 0.005 0.07 units box\nset atom 2001 diameter 0.001 density 2500\n&/' DEM/in.liggghts"
 check particle_outside_time '' "at time 0" \
     "sed -i 's/0 0.011 0 0.011 0 0.055 units box/0 0.011 0 0.011 0 0.08 units box/; s/^fix *cfd.*/create_atoms 1 single 0.005 0.005 0.07 units box\nset atom 2001 diameter 0.001 density 2500\n&/' DEM/in.liggghts"
+# a particle leaving the DEM box is deleted by LIGGGHTS (silently with thermo_modify lost ignore):
+# the solver stops at the next coupling with the count and the time
+check particle_lost '' "the DEM lost 1 particle(s) in the CFD step ending at time 0.0005 (2001 -> 2000)" \
+    "sed -i 's/^fix *cfd.*/&\ncreate_atoms 1 single 0.005 0.005 0.054 units box\nset atom 2001 diameter 0.001 density 2500\ngroup fly id 2001\nvelocity fly set 0 0 50\nfix fly fly nve\/sphere\nthermo_modify lost ignore/' DEM/in.liggghts"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

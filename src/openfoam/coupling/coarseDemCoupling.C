@@ -25,15 +25,23 @@ coarseDemCoupling::coarseDemCoupling
     couplingInterval_(dict_.get<label>("couplingInterval")),
     implicitDrag_(dict_.lookupOrDefault<Switch>("implicitDrag", true)),
     demRestart_(dict_.lookupOrDefault<Switch>("demRestart", true)),
+    allowParticleLoss_(dict_.lookupOrDefault<Switch>("allowParticleLoss", false)),
     cgFactor_(dict_.lookupOrDefault<scalar>("coarseGrainingFactor", 1)),
     fluid_{rho.value(), nu.value(), g.value()},
     demMesh_(mesh),
     voidFraction_(dict_, demMesh_),
-    halo_(mesh),
     backgroundKernels_(nullptr),
     needs_(0),
+    halo_(mesh),
     solidVolumeParticles_(0), solidVolumeCells_(0), momentumImbalance_(0), forceScale_(0),
     nParticles_(0),
+    nParticlesBefore_(-1),
+    particleDragRatio_(0),
+    nParticlesBeyond_(0),
+    fluidDragRatio_(0),
+    nCellsBeyond_(0),
+    warnedParticleSide_(false),
+    warnedFluidSide_(false),
     alphaP
     (
         IOobject("alphaP", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
@@ -210,6 +218,7 @@ void coarseDemCoupling::couple
     dem_->pull(particles_);
     const label n = particles_.size();
     nParticles_ = returnReduce(n, sumOp<label>());
+    checkParticleCount();
 
     // particles for the core; NaN positions and bad radii are caught there (named by id)
     static_assert(sizeof(long long) == sizeof(int64_t), "DEM ids are 64 bit");
@@ -364,6 +373,73 @@ void coarseDemCoupling::couple
     reduce(forceScale_, sumOp<scalar>());
     momentumImbalance_ = mag(fluidTotal + fParticles);
     timers_.stop();
+
+    checkExplicitRange(alpha);
+}
+
+void coarseDemCoupling::checkParticleCount()
+{
+    // LIGGGHTS deletes particles that leave its box (boundary f) and may only say so at its next
+    // thermo output: a drop is lost solid mass, so it stops the run unless it is intended
+    if (nParticlesBefore_ >= 0 && nParticles_ < nParticlesBefore_ && !allowParticleLoss_)
+    {
+        FatalErrorInFunction
+            << "the DEM lost " << nParticlesBefore_ - nParticles_ << " particle(s) in the CFD step"
+            << " ending at time " << mesh_.time().timeName() << " (" << nParticlesBefore_ << " -> "
+            << nParticles_ << "): LIGGGHTS deletes particles that leave its box; check the DEM"
+            << " walls and the time steps, or set allowParticleLoss true in " << dict_.name()
+            << " if particles are removed on purpose" << exit(FatalError);
+    }
+    nParticlesBefore_ = nParticles_;
+}
+
+void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    const label n = particles_.size();
+    particleDragRatio_ = 0;
+    nParticlesBeyond_ = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar r = dt*K_[i]/(particles_.density[i]*volume_[i]);
+        particleDragRatio_ = max(particleDragRatio_, r);
+        if (r > 1) ++nParticlesBeyond_;
+    }
+    reduce(particleDragRatio_, maxOp<scalar>());
+    reduce(nParticlesBeyond_, sumOp<label>());
+    if (nParticlesBeyond_ > 0 && !warnedParticleSide_)
+    {
+        WarningInFunction
+            << "explicit particle-side coupling beyond its range at time " << mesh_.time().timeName()
+            << ": " << nParticlesBeyond_ << " particle(s) have CFD step x K/m > 1 (max "
+            << particleDragRatio_ << "); the DEM holds the drag K (u_f - v) for the whole CFD step,"
+            << " so their velocity overshoots (unstable above 2): reduce couplingInterval" << endl;
+        warnedParticleSide_ = true;
+    }
+
+    fluidDragRatio_ = 0;
+    nCellsBeyond_ = 0;
+    if (implicitDrag_) return;   // Ksl is implicit in the fluid momentum equation: no limit
+    scalarField Kr(n);
+    forAll(Kr, i) Kr[i] = K_[i]/fluid_.rho;
+    scalarField KslExplicit(mesh_.nCells(), 0);
+    spread(Kr.cdata(), 1, KslExplicit.data());
+    forAll(KslExplicit, celli)
+    {
+        const scalar r = dt*KslExplicit[celli]/alpha[celli];
+        fluidDragRatio_ = max(fluidDragRatio_, r);
+        if (r > 1) ++nCellsBeyond_;
+    }
+    reduce(fluidDragRatio_, maxOp<scalar>());
+    reduce(nCellsBeyond_, sumOp<label>());
+    if (nCellsBeyond_ > 0 && !warnedFluidSide_)
+    {
+        WarningInFunction
+            << "explicit fluid drag beyond its range at time " << mesh_.time().timeName() << ": "
+            << nCellsBeyond_ << " cell(s) have CFD step x Ksl/alpha_f > 1 (max " << fluidDragRatio_
+            << "); set implicitDrag true in " << dict_.name() << " or reduce couplingInterval" << endl;
+        warnedFluidSide_ = true;
+    }
 }
 
 void coarseDemCoupling::write()
@@ -385,7 +461,14 @@ void coarseDemCoupling::report(Ostream& os) const
         << " (rel. err " << volErr << ")"
         << ", momentum imbalance " << momentumImbalance_ << " N of " << forceScale_ << " N"
         << ", limiter moved " << returnReduce(voidFraction_.movedVolume(), sumOp<scalar>()) << " m3 in "
-        << returnReduce(voidFraction_.nLimitedCells(), sumOp<label>()) << " cells" << endl;
+        << returnReduce(voidFraction_.nLimitedCells(), sumOp<label>()) << " cells"
+        << ", drag dt K/m max " << particleDragRatio_ << " (" << nParticlesBeyond_ << " particles > 1)";
+    if (!implicitDrag_)
+    {
+        os  << ", explicit fluid drag dt Ksl/alpha max " << fluidDragRatio_ << " (" << nCellsBeyond_
+            << " cells > 1)";
+    }
+    os  << endl;
 }
 
 } // End namespace Foam

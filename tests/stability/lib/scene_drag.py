@@ -87,6 +87,11 @@ def main():
         else:
             ok = False
             parts.append("reference run unusable: " + ref["desc"])
+    # the solver must say when explicit fluid drag is beyond its range, and only then
+    for case, expected, label in ((a.implicit, False, "implicit run:"), (a.explicit, True, "explicit run:")):
+        w_ok, desc = stablib.check_warning(case, stablib.FLUID_SIDE_WARNING, expected, label)
+        ok = ok and w_ok
+        parts.append(desc + " (fluid side)")
     parts.append(summary)
     print("%s %s: %s" % ("PASS" if ok else "FAIL", a.scene, "; ".join(parts)))
     return 0 if ok else 1

@@ -94,6 +94,8 @@ def main():
     ap.add_argument("--tol", type=float, required=True, help="final velocity, relative to the ODE's")
     ap.add_argument("--tol-history", type=float, help="largest deviation over the run / final speed (default 2 tol)")
     ap.add_argument("--explicit-case")
+    ap.add_argument("--particle-side-warning", choices=("yes", "no"),
+                    help="assert that the solver warns (or not) about the particle-side explicit range")
     a = ap.parse_args()
     th = a.tol_history if a.tol_history is not None else 2 * a.tol
     r = assess(a.case, a.tol, th)
@@ -101,6 +103,11 @@ def main():
     if a.explicit_case:
         re_ = assess(a.explicit_case, a.tol, th)
         line = "implicitDrag true: " + line + "; implicitDrag false: " + re_["desc"]
+    if a.particle_side_warning:
+        w_ok, desc = stablib.check_warning(a.case, stablib.PARTICLE_SIDE_WARNING,
+                                           a.particle_side_warning == "yes", "particle side:")
+        r["ok"] = r["ok"] and w_ok
+        line += "; " + desc
     line += "; " + r["summary"]
     print("%s %s: %s" % ("PASS" if r["ok"] else "FAIL", a.scene, line))
     return 0 if r["ok"] else 1

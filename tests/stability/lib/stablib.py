@@ -154,6 +154,24 @@ def log_has_nan(case, log="log.coarseDemFoam"):
     return None
 
 
+# the solver's warnings for explicit coupling beyond its stable range (coarseDemCoupling.C)
+PARTICLE_SIDE_WARNING = "explicit particle-side coupling beyond its range"
+FLUID_SIDE_WARNING = "explicit fluid drag beyond its range"
+
+
+def log_has(case, text, log="log.coarseDemFoam"):
+    with open(os.path.join(case, log), errors="replace") as f:
+        return any(text in line for line in f)
+
+
+def check_warning(case, text, expected, label):
+    """(ok, description): whether the log has the warning `text` as `expected` (True/False)."""
+    found = log_has(case, text)
+    desc = "%s %s" % (label, "warned" if found else "no warning")
+    return found == expected, desc + ("" if found == expected else " (expected %s)" %
+                                      ("a warning" if expected else "none"))
+
+
 def log_tail(case, n=6, log="log.coarseDemFoam"):
     try:
         with open(os.path.join(case, log), errors="replace") as f:
