@@ -42,6 +42,7 @@ coarseDemCoupling::coarseDemCoupling
     nCellsBeyond_(0),
     warnedParticleSide_(false),
     warnedFluidSide_(false),
+    keepRestartForces_(false),
     alphaP
     (
         IOobject("alphaP", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
@@ -132,6 +133,7 @@ coarseDemCoupling::coarseDemCoupling
 
     dem_.reset(new liggghtsDem(mesh, dict_));
     checkDemTimestep(dem_->lammps(), dict_);   // vs Rayleigh and Hertz times: warn / stop
+    keepRestartForces_ = dem_->restarted();
 
     Info<< "coarseDemCoupling: model " << modelType << ", voidFractionModel " << voidFraction_.method()
         << ", smoothing " << voidFraction_.smoothingName() << ", background fields "
@@ -328,7 +330,14 @@ void coarseDemCoupling::couple
 
     // fluid sources from the same kernels
     timers_.start(stageTimers::exchange);
-    dem_->push(force_);
+    if (keepRestartForces_)
+    {
+        keepRestartForces_ = false;   // the balance line of this step describes forces not applied
+    }
+    else
+    {
+        dem_->push(force_);
+    }
     const scalar rho = fluid_.rho;
     vectorField q(n);
     if (implicitDrag_)
@@ -448,7 +457,7 @@ void coarseDemCoupling::write()
     {
         const fileName dir = mesh_.time().globalPath()/mesh_.time().timeName();
         if (Pstream::master()) mkDir(dir);
-        dem_->command("write_restart " + std::string(dir/"dem.restart"));
+        dem_->writeRestart(dir/"dem.restart");
     }
 }
 

@@ -14,7 +14,9 @@
 Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
 :
     lmp_(nullptr),
-    fix_(nullptr)
+    fix_(nullptr),
+    restarted_(false),
+    setupNext_(false)
 {
     // the DEM script and its relative paths belong to the case, not to processorN/
     const fileName caseDir = mesh.time().globalPath();
@@ -41,6 +43,7 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     //   if "${restarting} == 1" then "read_restart ${restart}" else "read_restart DEM/init.restart"
     const fileName restartFile = caseDir/mesh.time().timeName()/"dem.restart";
     const std::string restart = isFile(restartFile) ? std::string(restartFile) : std::string("none");
+    restarted_ = restart != "none";
     // COARSEDEM_DEM_SCREEN=1 keeps LIGGGHTS' screen output on stdout (for debugging DEM errors)
     std::vector<std::string> args =
         {"liggghts", "-log", logFile, "-var", "restart", restart, "-var", "restarting", restart == "none" ? "0" : "1"};
@@ -89,7 +92,8 @@ void Foam::liggghtsDem::command(const std::string& line)
 
 void Foam::liggghtsDem::run(label nSteps)
 {
-    command("run " + std::to_string(nSteps) + " pre no post no");
+    command("run " + std::to_string(nSteps) + (setupNext_ ? " pre yes" : " pre no") + " post no");
+    setupNext_ = false;
     if (Pstream::parRun())
     {
         // LIGGGHTS moves a particle to the rank of its new sub-domain only when it rebuilds its
@@ -98,6 +102,12 @@ void Foam::liggghtsDem::run(label nSteps)
         // migrates every particle to its owner (one neighbour-list build per coupling step).
         command("run 0 pre yes post no");
     }
+}
+
+void Foam::liggghtsDem::writeRestart(const std::string& file)
+{
+    command("write_restart " + file);
+    setupNext_ = true;
 }
 
 void Foam::liggghtsDem::pull(demParticles& p) const

@@ -135,6 +135,8 @@ def main():
             f.write("create_atoms 1 single %s %s %s units box\n" % (fmt(x), fmt(y), fmt(z)))
         if pts:
             f.write("set group all diameter %s density %s\n" % (v["DIAMETER_M"], v["RHO_P"]))
+        # initial velocities belong to a fresh start only (a restart reads them from its file)
+        f.write(v["VELOCITY_COMMANDS"] + "\n")
     os.makedirs(os.path.join(case, "post"), exist_ok=True)
     with open(os.path.join(case, "case.params"), "w") as f:
         for k in sorted(v):
