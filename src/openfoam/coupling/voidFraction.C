@@ -32,10 +32,24 @@ void buildKernels(const coarseDemMesh& mesh, cdc_kernels* k, const cdc_particles
     const cdc_status st = halo.active() ? cdc_kernels_build_raw(k, &p, &ghosts) : cdc_kernels_build(k, &p);
     if (st == CDC_ERR_OUTSIDE)
     {
+        // in parallel a particle inside the whole mesh but outside this rank's part was handed to
+        // this rank by the DEM's own decomposition: the two split the domain at different planes
+        const boundBox& whole = mesh.mesh().bounds();   // global (reduced over the ranks)
+        label outsideWhole = 0;
+        for (int32_t i = 0; i < p.n; ++i)
+        {
+            if (!whole.contains(point(p.position[3*i], p.position[3*i + 1], p.position[3*i + 2]))) ++outsideWhole;
+        }
+        const bool decompositionMismatch = Pstream::parRun() && outsideWhole == 0;
         FatalErrorInFunction
             << what << ": " << cdc_last_error(mesh.context()) << nl
-            << "    at time " << mesh.mesh().time().timeName()
-            << ": particles must stay inside the CFD mesh (check the DEM walls and insertion region)"
+            << "    at time " << mesh.mesh().time().timeName() << ": "
+            << (decompositionMismatch
+                ? "these particles are inside the CFD mesh but in another rank's part of it: the DEM"
+                  " (LIGGGHTS processors command) and the CFD (system/decomposeParDict) must split the"
+                  " domain at the same planes, e.g. simple (2 1 1) with an even number of cells across"
+                  " and processors * 1 1"
+                : "particles must stay inside the CFD mesh (check the DEM walls and insertion region)")
             << exit(FatalError);
     }
     mesh.check(st, what);

@@ -17,8 +17,24 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stablib
 
 
+DECOMPOSITION_MISMATCH = "must split the domain at the same planes"
+
+
+def refused(par, scene):
+    """The np = 2 run must stop at once, naming the cause: DEM and CFD split the domain differently."""
+    rc = stablib.exit_status(par)
+    said = stablib.log_has(par, DECOMPOSITION_MISMATCH)
+    ok = rc != 0 and said
+    print("%s %s: np=2 exit status %d, %s" % ("PASS" if ok else "FAIL", scene, rc,
+          "stopped naming the decomposition mismatch" if said else "no decomposition-mismatch message: "
+          + stablib.failure_reason(par)))
+    return 0 if ok else 1
+
+
 def main():
     mode, serial, par, scene = sys.argv[1:5]
+    if mode == "refused":
+        return refused(par, scene)
     p = stablib.params(par)
     n0 = int(p["N_PARTICLES"])
     W = float(p["WIDTH_MM"]) * 1e-3
