@@ -51,6 +51,7 @@ DEFAULTS = {
     "JITTER": "0.02",
     "SEED": "1",
     "CENTRE_OFFSET": "0",
+    "HYDROSTATIC_INIT": "true",
 }
 
 
