@@ -100,8 +100,7 @@ FixCoupleCoarse::FixCoupleCoarse(LAMMPS *lmp, int narg, char **arg) :
   atom->add_callback(0);  // grow/copy/exchange
   atom->add_callback(1);  // restart
 
-  for (int i = 0; i < atom->nmax; i++)
-    fcoupling_[i][0] = fcoupling_[i][1] = fcoupling_[i][2] = 0.0;
+  for (int i = 0; i < atom->nmax; i++) set_arrays(i);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -151,9 +150,11 @@ void FixCoupleCoarse::post_force(int)
   const int n = atom->nlocal;
   for (int i = 0; i < n; i++) {
     if (mask[i] & groupbit) {
-      f[i][0] += fcoupling_[i][0];
-      f[i][1] += fcoupling_[i][1];
-      f[i][2] += fcoupling_[i][2];
+      double fi[3];
+      coupling_force(i, fi);
+      f[i][0] += fi[0];
+      f[i][1] += fi[1];
+      f[i][2] += fi[2];
     }
   }
 }
@@ -176,7 +177,7 @@ double FixCoupleCoarse::compute_vector(int n)
 
 double FixCoupleCoarse::memory_usage()
 {
-  return 3.0 * atom->nmax * sizeof(double) + maxpulled_ * sizeof(int);
+  return double(NDATA) * atom->nmax * sizeof(double) + maxpulled_ * sizeof(int);
 }
 
 /* ----------------------------------------------------------------------
@@ -185,45 +186,38 @@ double FixCoupleCoarse::memory_usage()
 
 void FixCoupleCoarse::grow_arrays(int nmax)
 {
-  memory->grow(fcoupling_, nmax, 3, "fix_couple_coarse:fcoupling");
+  memory->grow(fcoupling_, nmax, NDATA, "fix_couple_coarse:fcoupling");
 }
 
 void FixCoupleCoarse::copy_arrays(int i, int j, int)
 {
-  fcoupling_[j][0] = fcoupling_[i][0];
-  fcoupling_[j][1] = fcoupling_[i][1];
-  fcoupling_[j][2] = fcoupling_[i][2];
+  for (int d = 0; d < NDATA; d++) fcoupling_[j][d] = fcoupling_[i][d];
 }
 
 void FixCoupleCoarse::set_arrays(int i)
 {
-  fcoupling_[i][0] = fcoupling_[i][1] = fcoupling_[i][2] = 0.0;
+  for (int d = 0; d < NDATA; d++) fcoupling_[i][d] = 0.0;
 }
 
+// the exchange record must have the same length on both sides (NDATA values)
 int FixCoupleCoarse::pack_exchange(int i, double *buf)
 {
-  buf[0] = fcoupling_[i][0];
-  buf[1] = fcoupling_[i][1];
-  buf[2] = fcoupling_[i][2];
-  return 3;
+  for (int d = 0; d < NDATA; d++) buf[d] = fcoupling_[i][d];
+  return NDATA;
 }
 
 int FixCoupleCoarse::unpack_exchange(int nlocal, double *buf)
 {
-  fcoupling_[nlocal][0] = buf[0];
-  fcoupling_[nlocal][1] = buf[1];
-  fcoupling_[nlocal][2] = buf[2];
-  return 3;
+  for (int d = 0; d < NDATA; d++) fcoupling_[nlocal][d] = buf[d];
+  return NDATA;
 }
 
-// restart record per atom: [length=4, fx, fy, fz]
+// restart record per atom: [length = NDATA + 1, fx, fy, fz, K, ufx, ufy, ufz]
 int FixCoupleCoarse::pack_restart(int i, double *buf)
 {
-  buf[0] = 4;
-  buf[1] = fcoupling_[i][0];
-  buf[2] = fcoupling_[i][1];
-  buf[3] = fcoupling_[i][2];
-  return 4;
+  buf[0] = NDATA + 1;
+  for (int d = 0; d < NDATA; d++) buf[1 + d] = fcoupling_[i][d];
+  return NDATA + 1;
 }
 
 void FixCoupleCoarse::unpack_restart(int nlocal, int nth)
@@ -233,19 +227,17 @@ void FixCoupleCoarse::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
   m++;
-  fcoupling_[nlocal][0] = extra[nlocal][m++];
-  fcoupling_[nlocal][1] = extra[nlocal][m++];
-  fcoupling_[nlocal][2] = extra[nlocal][m++];
+  for (int d = 0; d < NDATA; d++) fcoupling_[nlocal][d] = extra[nlocal][m++];
 }
 
 int FixCoupleCoarse::size_restart(int)
 {
-  return 4;
+  return NDATA + 1;
 }
 
 int FixCoupleCoarse::maxsize_restart()
 {
-  return 4;
+  return NDATA + 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -319,9 +311,37 @@ void FixCoupleCoarse::push_forces(const double *f)
     fcoupling_[i][0] = f[3*k];
     fcoupling_[i][1] = f[3*k+1];
     fcoupling_[i][2] = f[3*k+2];
+    fcoupling_[i][3] = 0.0;   // no drag part until push_drag()
     k++;
   }
   npush_++;
+}
+
+void FixCoupleCoarse::push_drag(const double *K, const double *ufluid)
+{
+  if (pull_step_ < 0)
+    error->one(FLERR, "Fix couple/coarse: push_drag() without a preceding pull()");
+  int k = 0;
+  for (int i = 0; i < atom->nlocal && k < npulled_; i++) {
+    if (!in_group(i)) continue;
+    fcoupling_[i][3] = K[k];
+    fcoupling_[i][4] = ufluid[3*k];
+    fcoupling_[i][5] = ufluid[3*k+1];
+    fcoupling_[i][6] = ufluid[3*k+2];
+    k++;
+  }
+}
+
+// stored force + drag K (u_fluid - v) with the particle's velocity of this DEM step: the drag
+// relaxes with the DEM step, so it stays stable when the CFD step exceeds the particle response
+// time m/K (a drag force held for the coupling interval overshoots there)
+void FixCoupleCoarse::coupling_force(int i, double out[3]) const
+{
+  const double *c = fcoupling_[i];
+  const double *v = atom->v[i];
+  out[0] = c[0] + c[3]*(c[4] - v[0]);
+  out[1] = c[1] + c[3]*(c[5] - v[1]);
+  out[2] = c[2] + c[3]*(c[6] - v[2]);
 }
 
 void FixCoupleCoarse::total_force(double out[3]) const
@@ -329,8 +349,10 @@ void FixCoupleCoarse::total_force(double out[3]) const
   out[0] = out[1] = out[2] = 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!in_group(i)) continue;
-    out[0] += fcoupling_[i][0];
-    out[1] += fcoupling_[i][1];
-    out[2] += fcoupling_[i][2];
+    double fi[3];
+    coupling_force(i, fi);
+    out[0] += fi[0];
+    out[1] += fi[1];
+    out[2] += fi[2];
   }
 }

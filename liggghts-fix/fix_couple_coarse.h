@@ -44,7 +44,8 @@ through lmp->modify and, every coupling interval, it
   2. computes the fluid-particle force on each of them (drag, pressure
      gradient, ...);
   3. calls push_forces() with one force vector per particle, in the order of
-     the pull();
+     the pull(), and (optionally) push_drag() with a drag coefficient and the
+     fluid velocity per particle;
   4. advances the DEM with "run N pre no post no".
 
 The pushed force of every particle is stored in a per-atom array that travels
@@ -58,7 +59,7 @@ the stored coupling force of the particles in the group (force units). It can
 be printed with thermo_style custom as f_ID[1], f_ID[2], f_ID[3]. It is an
 extensive quantity.
 
-The stored forces are written to restart files, so that a restarted run
+The stored forces and drag data are written to restart files, so that a restarted run
 applies the forces of the last coupling step until the solver pushes new ones.
 
 Public C++ interface (used by the solver; "local" means owned by this rank and
@@ -72,10 +73,18 @@ in the fix group, in LIGGGHTS' local atom order at the time of the call):
    void push_forces(const double *f);
         3*nlocal() values, per particle in the order of the last pull().
         Must be called before the next DEM step after the pull (the local
-        order changes during a run).
+        order changes during a run). It clears the drag part (push_drag).
+   void push_drag(const double *K, const double *ufluid);
+        optional, after push_forces(): per particle a drag coefficient K (kg/s,
+        nlocal() values) and the fluid velocity at the particle (3*nlocal()
+        values), in the order of the last pull(). Until the next push the
+        particle then gets, every DEM step, K (u_fluid - v) with its current
+        velocity v on top of the pushed force: the drag relaxes with the DEM
+        step and stays stable when the coupling interval is longer than the
+        particle response time m/K.
    void total_force(double out[3]) const;
-        sum of the stored coupling force over the local particles (no MPI
-        communication); for momentum balance checks.
+        sum of the coupling force (stored force + drag part at the current
+        velocities) over the local particles (no MPI communication).
 
 Restrictions:
 
@@ -133,6 +142,7 @@ class FixCoupleCoarse : public Fix {
   int nlocal() const;
   void pull(double *x, double *v, double *radius, double *density, int *type, long long *id);
   void push_forces(const double *f);
+  void push_drag(const double *K, const double *ufluid);
   void total_force(double out[3]) const;
 
   // number of pull() and push_forces() calls so far (for diagnostics)
@@ -140,7 +150,9 @@ class FixCoupleCoarse : public Fix {
   long long n_pushes() const { return npush_; }
 
  private:
-  double **fcoupling_;   // per-atom stored coupling force, [atom->nmax][3]
+  // per-atom coupling data, [atom->nmax][NDATA]: force (3), drag coefficient K, fluid velocity (3)
+  enum { NDATA = 7 };
+  double **fcoupling_;
   int apply_;            // 1: add fcoupling_ to f in post_force
   int check_order_;      // 1: push_forces checks that atoms are those of the last pull
 
@@ -152,6 +164,7 @@ class FixCoupleCoarse : public Fix {
   long long npull_, npush_;
 
   int in_group(int i) const;
+  void coupling_force(int i, double out[3]) const;   // force + K (u_fluid - v)
 };
 
 }

@@ -24,6 +24,7 @@ coarseDemCoupling::coarseDemCoupling
     modelB_(false),
     couplingInterval_(dict_.get<label>("couplingInterval")),
     implicitDrag_(dict_.lookupOrDefault<Switch>("implicitDrag", true)),
+    implicitParticleDrag_(dict_.lookupOrDefault<Switch>("implicitParticleDrag", true)),
     demRestart_(dict_.lookupOrDefault<Switch>("demRestart", true)),
     allowParticleLoss_(dict_.lookupOrDefault<Switch>("allowParticleLoss", false)),
     cgFactor_(dict_.lookupOrDefault<scalar>("coarseGrainingFactor", 1)),
@@ -138,7 +139,8 @@ coarseDemCoupling::coarseDemCoupling
     Info<< "coarseDemCoupling: model " << modelType << ", voidFractionModel " << voidFraction_.method()
         << ", smoothing " << voidFraction_.smoothingName() << ", background fields "
         << (backgroundKernels_ ? "bigParticle kernel" : "void-fraction kernels")
-        << ", drag " << (implicitDrag_ ? "implicit" : "explicit") << ", forces " << names
+        << ", drag on the fluid " << (implicitDrag_ ? "implicit" : "explicit") << ", on the particles "
+        << (implicitParticleDrag_ ? "every DEM step" : "held for the CFD step") << ", forces " << names
         << ", DEM step " << dem_->timestep() << " s x " << couplingInterval_ << endl;
 }
 
@@ -316,13 +318,22 @@ void coarseDemCoupling::couple
             if (fm.reactsOnFluid(modelB_)) fReact_ += fi;
         }
     }
+    // implicitParticleDrag: the DEM gets the other forces as a force and the drag as K and u_f
     force_.resize(3*n);
+    dragK_.resize(implicitParticleDrag_ ? n : 0);
+    dragUf_.resize(implicitParticleDrag_ ? 3*n : 0);
     forceScale_ = 0;
     vector fParticles(Zero);
     for (label i = 0; i < n; ++i)
     {
         const vector f = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
-        for (direction d = 0; d < 3; ++d) force_[3*i + d] = f[d];
+        const vector fDem = implicitParticleDrag_ ? fOther_[i] : f;
+        for (direction d = 0; d < 3; ++d) force_[3*i + d] = fDem[d];
+        if (implicitParticleDrag_)
+        {
+            dragK_[i] = K_[i];
+            for (direction d = 0; d < 3; ++d) dragUf_[3*i + d] = state_.Uf[i][d];
+        }
         fParticles += K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i];
         forceScale_ += mag(f);
     }
@@ -337,6 +348,7 @@ void coarseDemCoupling::couple
     else
     {
         dem_->push(force_);
+        if (implicitParticleDrag_) dem_->pushDrag(dragK_, dragUf_);
     }
     const scalar rho = fluid_.rho;
     vectorField q(n);
@@ -405,12 +417,13 @@ void coarseDemCoupling::checkParticleCount()
 void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
 {
     const scalar dt = mesh_.time().deltaTValue();
+    const scalar dtParticle = implicitParticleDrag_ ? dem_->timestep() : dt;
     const label n = particles_.size();
     particleDragRatio_ = 0;
     nParticlesBeyond_ = 0;
     for (label i = 0; i < n; ++i)
     {
-        const scalar r = dt*K_[i]/(particles_.density[i]*volume_[i]);
+        const scalar r = dtParticle*K_[i]/(particles_.density[i]*volume_[i]);
         particleDragRatio_ = max(particleDragRatio_, r);
         if (r > 1) ++nParticlesBeyond_;
     }
@@ -420,9 +433,13 @@ void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
     {
         WarningInFunction
             << "explicit particle-side coupling beyond its range at time " << mesh_.time().timeName()
-            << ": " << nParticlesBeyond_ << " particle(s) have CFD step x K/m > 1 (max "
-            << particleDragRatio_ << "); the DEM holds the drag K (u_f - v) for the whole CFD step,"
-            << " so their velocity overshoots (unstable above 2): reduce couplingInterval" << endl;
+            << ": " << nParticlesBeyond_ << " particle(s) have "
+            << (implicitParticleDrag_ ? "DEM step" : "CFD step") << " x K/m > 1 (max "
+            << particleDragRatio_ << "); the drag K (u_f - v) is held for that step, so their"
+            << " velocity overshoots (unstable above 2): "
+            << (implicitParticleDrag_ ? "reduce the DEM time step"
+                                      : "set implicitParticleDrag true or reduce couplingInterval")
+            << endl;
         warnedParticleSide_ = true;
     }
 

@@ -126,3 +126,8 @@ void Foam::liggghtsDem::push(const std::vector<double>& f)
 {
     fix_->push_forces(f.data());
 }
+
+void Foam::liggghtsDem::pushDrag(const std::vector<double>& K, const std::vector<double>& uf)
+{
+    fix_->push_drag(K.data(), uf.data());
+}

@@ -96,18 +96,21 @@ def main():
     ap.add_argument("--explicit-case")
     ap.add_argument("--particle-side-warning", choices=("yes", "no"),
                     help="assert that the solver warns (or not) about the particle-side explicit range")
+    ap.add_argument("--explicit-warning", choices=("yes", "no"),
+                    help="the same for the --explicit-case run")
     a = ap.parse_args()
     th = a.tol_history if a.tol_history is not None else 2 * a.tol
     r = assess(a.case, a.tol, th)
     line = "dt_CFD/tau_p %.3g (tau_p %.3g s at v_t), %s" % (r["dt_cfd"] / r["tau"], r["tau"], r["desc"])
     if a.explicit_case:
         re_ = assess(a.explicit_case, a.tol, th)
-        line = "implicitDrag true: " + line + "; implicitDrag false: " + re_["desc"]
-    if a.particle_side_warning:
-        w_ok, desc = stablib.check_warning(a.case, stablib.PARTICLE_SIDE_WARNING,
-                                           a.particle_side_warning == "yes", "particle side:")
-        r["ok"] = r["ok"] and w_ok
-        line += "; " + desc
+        line = "implicit: " + line + "; explicit: " + re_["desc"]
+    for case, want, label in ((a.case, a.particle_side_warning, "implicit run, particle side:"),
+                              (a.explicit_case, a.explicit_warning, "explicit run, particle side:")):
+        if case and want:
+            w_ok, desc = stablib.check_warning(case, stablib.PARTICLE_SIDE_WARNING, want == "yes", label)
+            r["ok"] = r["ok"] and w_ok
+            line += "; " + desc
     line += "; " + r["summary"]
     print("%s %s: %s" % ("PASS" if r["ok"] else "FAIL", a.scene, line))
     return 0 if r["ok"] else 1
