@@ -46,7 +46,8 @@ through lmp->modify and, every coupling interval, it
   3. calls push_forces() with one force vector per particle, in the order of
      the pull(), and (optionally) push_drag() with a drag coefficient and the
      fluid velocity per particle;
-  4. advances the DEM with "run N pre no post no".
+  4. advances the DEM with "run N pre yes post no" (the setup makes the first
+     half-step use the forces just pushed).
 
 The pushed force of every particle is stored in a per-atom array that travels
 with the particle when it migrates to another processor or when LIGGGHTS sorts

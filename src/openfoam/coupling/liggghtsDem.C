@@ -15,8 +15,7 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
 :
     lmp_(nullptr),
     fix_(nullptr),
-    restarted_(false),
-    setupNext_(false)
+    restarted_(false)
 {
     // the DEM script and its relative paths belong to the case, not to processorN/
     const fileName caseDir = mesh.time().globalPath();
@@ -92,8 +91,10 @@ void Foam::liggghtsDem::command(const std::string& line)
 
 void Foam::liggghtsDem::run(label nSteps)
 {
-    command("run " + std::to_string(nSteps) + (setupNext_ ? " pre yes" : " pre no") + " post no");
-    setupNext_ = false;
+    // Every DEM segment starts with LIGGGHTS' setup: the forces of its first half-step are then those
+    // of the coupling data just pushed (K, u_f at the particles' current velocity), the same in serial,
+    // in parallel (where a setup follows each segment, below) and after a restart or write_restart.
+    command("run " + std::to_string(nSteps) + " pre yes post no");
     if (Pstream::parRun())
     {
         // LIGGGHTS moves a particle to the rank of its new sub-domain only when it rebuilds its
@@ -106,8 +107,8 @@ void Foam::liggghtsDem::run(label nSteps)
 
 void Foam::liggghtsDem::writeRestart(const std::string& file)
 {
+    // LIGGGHTS re-initialises and re-exchanges the atoms for it; the next run's setup rebuilds the rest
     command("write_restart " + file);
-    setupNext_ = true;
 }
 
 void Foam::liggghtsDem::pull(demParticles& p) const
