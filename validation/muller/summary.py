@@ -37,7 +37,11 @@ def main():
             if line:
                 q, z, rms, mx, sem, n = line.split(",")
                 errs[(q, z)] = (float(rms), float(mx), float(sem))
-        wall = sum(float(l) for l in open(os.path.join(run, "wall_seconds.txt")) if l.strip())
+        # wall_seconds.txt: one line per (re)start, "<wall seconds> [<MPI ranks>]"
+        starts = [l.split() for l in open(os.path.join(run, "wall_seconds.txt")) if l.strip()]
+        wall = sum(float(t[0]) for t in starts)
+        core = sum(float(t[0]) * (int(t[1]) if len(t) > 1 else 1) for t in starts)
+        ranks = "/".join(sorted(set(t[1] if len(t) > 1 else "1" for t in starts)))
         cpath = os.path.join(run, "commit.txt")
         commit = " ".join(sorted(set(l.strip() for l in open(cpath) if l.strip()))) if os.path.exists(cpath) else "unknown"
         log = os.path.join(run, "log.coarseDemFoam")
@@ -45,7 +49,7 @@ def main():
         total = sum(st.values()) or float("nan")
         coupling = sum(st.get(k, 0) for k in ("locate", "kernel", "smoothing", "forces", "exchange"))
         info = open(os.path.join(run, "results", "profiles_info.txt")).readline().strip()
-        rows.append(dict(run=name, model=name.split("_")[0], wall=wall, commit=commit, coupling_share=coupling / total,
+        rows.append(dict(run=name, model=name.split("_")[0], wall=wall, core=core, ranks=ranks, commit=commit, coupling_share=coupling / total,
                          fluid_share=st.get("fluid", 0) / total, dem_share=st.get("DEM", 0) / total,
                          void_rms=errs.get(("void_fraction", "16.4"), (float("nan"),) * 3)[0],
                          void_sem=errs.get(("void_fraction", "16.4"), (float("nan"),) * 3)[2],
@@ -58,15 +62,15 @@ def main():
         for f in glob.glob(os.path.join(run, "results", "comparison", "*")):
             shutil.copy(f, dest)
     with open(os.path.join(out, "error_vs_runtime.csv"), "w") as f:
-        f.write("run,model,commit,wall_time_s,coupling_share,fluid_share,dem_share,voidfraction_z16.4_rms,voidfraction_z16.4_mean_sem,vz_z15_rms_m_per_s,vz_z15_mean_sem\n")
+        f.write("run,model,commit,ranks,wall_time_s,core_seconds,coupling_share,fluid_share,dem_share,voidfraction_z16.4_rms,voidfraction_z16.4_mean_sem,vz_z15_rms_m_per_s,vz_z15_mean_sem\n")
         for r in rows:
-            f.write(f"{r['run']},{r['model']},{r['commit']},{r['wall']:.0f},{r['coupling_share']:.3f},{r['fluid_share']:.3f},{r['dem_share']:.3f},"
+            f.write(f"{r['run']},{r['model']},{r['commit']},{r['ranks']},{r['wall']:.0f},{r['core']:.0f},{r['coupling_share']:.3f},{r['fluid_share']:.3f},{r['dem_share']:.3f},"
                     f"{r['void_rms']:.4f},{r['void_sem']:.4f},{r['vz_rms']:.4f},{r['vz_sem']:.4f}\n")
     with open(os.path.join(out, "error_vs_runtime.md"), "w") as f:
-        f.write("| run | commit | wall time (s) | coupling share | gas fraction RMS, z = 16.4 mm | particle v_z RMS, z = 15 mm (m/s) |\n|---|---|---|---|---|---|\n")
+        f.write("| run | commit | ranks | wall time (s) | core-seconds | coupling share | gas fraction RMS, z = 16.4 mm | particle v_z RMS, z = 15 mm (m/s) |\n|---|---|---|---|---|---|---|---|\n")
         for r in rows:
             share = "n/a" if r['coupling_share'] != r['coupling_share'] else f"{100*r['coupling_share']:.1f} %"
-            f.write(f"| {r['run']} | {r['commit']} | {r['wall']:.0f} | {share} | {r['void_rms']:.3f} (SEM {r['void_sem']:.3f}) | {r['vz_rms']:.3f} (SEM {r['vz_sem']:.3f}) |\n")
+            f.write(f"| {r['run']} | {r['commit']} | {r['ranks']} | {r['wall']:.0f} | {r['core']:.0f} | {share} | {r['void_rms']:.3f} (SEM {r['void_sem']:.3f}) | {r['vz_rms']:.3f} (SEM {r['vz_sem']:.3f}) |\n")
         if rows:
             f.write(f"\nAveraging window: {rows[0]['window']}\n")
     try:
@@ -78,14 +82,14 @@ def main():
         for i, (key, sem, label) in enumerate((("void_rms", "void_sem", "gas fraction RMS error, z = 16.4 mm"),
                                                ("vz_rms", "vz_sem", "particle v_z RMS error, z = 15 mm (m/s)"))):
             for r in rows:
-                for j, x in enumerate((r["wall"], 100 * r["coupling_share"])):
+                for j, x in enumerate((r["core"], 100 * r["coupling_share"])):
                     if x != x:
                         continue   # no stage timers (the DPMFoam baseline): no coupling share
                     ax[i][j].errorbar(x, r[key], yerr=r[sem], fmt="o", capsize=3)
                     ax[i][j].annotate(r["model"], (x, r[key]), textcoords="offset points", xytext=(4, 4))
             ax[i][0].set_ylabel(label)
             ax[i][1].set_ylabel(label)
-            ax[i][0].set_xlabel("wall time (s)")
+            ax[i][0].set_xlabel("run time (core-seconds: wall x MPI ranks)")
             ax[i][1].set_xlabel("coupling share of the wall time (%)")
             for a in ax[i]:
                 a.axhline(0.05, color="grey", lw=0.8, ls="--")
@@ -95,6 +99,6 @@ def main():
     except ImportError:
         print("summary.py: matplotlib missing, no PNG")
     for r in rows:
-        print(f"{r['run']}: wall {r['wall']:.0f} s, coupling {100*r['coupling_share']:.1f} %, void RMS {r['void_rms']:.4f}, vz RMS {r['vz_rms']:.4f}")
+        print(f"{r['run']}: wall {r['wall']:.0f} s x {r['ranks']} ranks, coupling {100*r['coupling_share']:.1f} %, void RMS {r['void_rms']:.4f}, vz RMS {r['vz_rms']:.4f}")
 
 main()
