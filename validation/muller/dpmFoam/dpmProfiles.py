@@ -192,11 +192,11 @@ def main():
             f.write(f"{s[0]:.6g},{s[1]},{s[2]:.6g},{s[3]:.6g},{s[4]:.6g},{s[5]:.6g},{s[6]:.6g}\n")
     print(f"dpmProfiles.py: {len(todo)} samples written to {os.path.join(pp, 'profiles')}"
           + (f", {unmatched} particle files without a gas sample skipped" if unmatched else "")
-          + f"; binned gas fraction vs the solver's alpha.air: max difference {worst:.2g}")
+          + f"; binned gas fraction vs the solver's alpha.air: max difference {worst:.2g}", flush=True)
     s = stats[max(stats, key=float)]
     print(f"dpmProfiles.py: last sample t = {s[0]:.6g} s: {s[1]} particles, mean height {s[2] * 1e3:.2f} mm, "
           f"90 % below {s[3] * 1e3:.2f} mm, mean v_z {s[4]:.3g} m/s, rms v_z {s[5]:.3g} m/s, "
-          f"solid volume above alphaMax {100 * s[6]:.2g} %")
+          f"solid volume above alphaMax {100 * s[6]:.2g} %", flush=True)
 
 
 main()
