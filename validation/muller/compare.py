@@ -58,8 +58,11 @@ def compare(results, data_dir, U, out):
             matplotlib.use("Agg")
             import matplotlib.pyplot as plt
             fig, ax = plt.subplots(figsize=(5, 3.6))
-            ax.errorbar([x * 1e3 for x in sx], sy, yerr=[2 * e for e in se], fmt="-", capsize=2,
-                        label="simulation (±2 batch SEM)")
+            if sem:
+                ax.errorbar([x * 1e3 for x in sx], sy, yerr=[0 if math.isnan(e) else 2 * e for e in se],
+                            fmt="-", capsize=2, label="simulation (±2 batch SEM)")
+            else:   # a single batch: no error bar to draw
+                ax.plot([x * 1e3 for x in sx], sy, "-", label="simulation (one batch: no SEM)")
             ax.plot([x * 1e3 for x in dx], dy, "ko", ms=4, label="Müller et al. (MR)")
             ax.set_xlabel("distance from the left wall (mm)")
             ax.set_ylabel({"voidfraction": "time-averaged gas fraction", "vz": "time-averaged particle v_z (m/s)"}.get(q, q))
