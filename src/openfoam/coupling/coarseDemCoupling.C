@@ -414,21 +414,28 @@ void coarseDemCoupling::checkParticleCount()
     nParticlesBefore_ = nParticles_;
 }
 
+//- Largest step x rate over all ranks and how many exceed 1 (the explicit update's range)
+static void tallyStepRatios(const UList<scalar>& ratio, scalar& largest, label& nBeyond)
+{
+    largest = 0;
+    nBeyond = 0;
+    for (const scalar r : ratio)
+    {
+        largest = max(largest, r);
+        if (r > 1) ++nBeyond;
+    }
+    reduce(largest, maxOp<scalar>());
+    reduce(nBeyond, sumOp<label>());
+}
+
 void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
 {
     const scalar dt = mesh_.time().deltaTValue();
     const scalar dtParticle = implicitParticleDrag_ ? dem_->timestep() : dt;
     const label n = particles_.size();
-    particleDragRatio_ = 0;
-    nParticlesBeyond_ = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar r = dtParticle*K_[i]/(particles_.density[i]*volume_[i]);
-        particleDragRatio_ = max(particleDragRatio_, r);
-        if (r > 1) ++nParticlesBeyond_;
-    }
-    reduce(particleDragRatio_, maxOp<scalar>());
-    reduce(nParticlesBeyond_, sumOp<label>());
+    scalarField particleRatio(n);
+    forAll(particleRatio, i) particleRatio[i] = dtParticle*K_[i]/(particles_.density[i]*volume_[i]);
+    tallyStepRatios(particleRatio, particleDragRatio_, nParticlesBeyond_);
     if (nParticlesBeyond_ > 0 && !warnedParticleSide_)
     {
         WarningInFunction
@@ -446,18 +453,10 @@ void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
     fluidDragRatio_ = 0;
     nCellsBeyond_ = 0;
     if (implicitDrag_) return;   // Ksl is implicit in the fluid momentum equation: no limit
-    scalarField Kr(n);
-    forAll(Kr, i) Kr[i] = K_[i]/fluid_.rho;
+    const scalarField Kr(K_/fluid_.rho);
     scalarField KslExplicit(mesh_.nCells(), 0);
     spread(Kr.cdata(), 1, KslExplicit.data());
-    forAll(KslExplicit, celli)
-    {
-        const scalar r = dt*KslExplicit[celli]/alpha[celli];
-        fluidDragRatio_ = max(fluidDragRatio_, r);
-        if (r > 1) ++nCellsBeyond_;
-    }
-    reduce(fluidDragRatio_, maxOp<scalar>());
-    reduce(nCellsBeyond_, sumOp<label>());
+    tallyStepRatios(dt*KslExplicit/alpha.primitiveField(), fluidDragRatio_, nCellsBeyond_);
     if (nCellsBeyond_ > 0 && !warnedFluidSide_)
     {
         WarningInFunction
