@@ -29,25 +29,18 @@
  */
 #include "../src/core/coarse_dem.h"
 #include "../src/core/tools/box_mesh.h"
+#include "../src/core/tools/program_util.h"
 
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #define PI 3.14159265358979323846
 static const double D = 1e-3;
 /* particles timed at most for the slow methods (the first ones of the set, same mesh) */
 static const int CAP_GAUSSIAN = 20000, CAP_EXACT = 10000;
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static void die(const char *what, const char *msg)
 {
@@ -58,11 +51,7 @@ static void die(const char *what, const char *msg)
 static uint64_t rng_state = 12345;
 static double rnd(void)
 {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+    return program_uniform(&rng_state);
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -136,7 +125,7 @@ int main(int argc, char **argv)
 
     static const uint8_t walls[6] = {CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL,
                                      CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};
-    const double t_all = now();
+    const double t_all = program_seconds();
     printf("%9s %9s %-15s %8s %8s %5s %11s %11s %11s %9s %9s %7s %10s %7s\n", "N", "cells", "method", "timed",
            "cells/k", "reps", "build s/p", "alpha s/p", "touch s/p", "build/tch", "alpha/tch", "locate%",
            "first/tch", "locate%");
@@ -183,18 +172,18 @@ int main(int argc, char **argv)
              * and fresh buffers -- the first coupling step. It fills the host hints. */
             for (int32_t i = 0; i < nt; ++i) hints[i] = -1;
             double tb[MAX_REPS], tlv[MAX_REPS], tk, tl_first;
-            double t0 = now();
+            double t0 = program_seconds();
             if (cdc_kernels_build(k, &p) != CDC_OK) die(md->name, cdc_last_error(ctx));
-            const double first = now() - t0;
+            const double first = program_seconds() - t0;
             cdc_kernels_timing(k, &tl_first, &tk);
             /* steady state: particles still in the hinted cells (they move less than a cell per
              * coupling step), buffers at capacity; repeated for >= 0.3 s in all, median */
             int reps = (int)ceil(0.3 / (first > 1e-9 ? first : 1e-9));
             reps = reps < 1 ? 1 : reps > MAX_REPS ? MAX_REPS : reps;
             for (int r = 0; r < reps; ++r) {
-                t0 = now();
+                t0 = program_seconds();
                 if (cdc_kernels_build(k, &p) != CDC_OK) die(md->name, cdc_last_error(ctx));
-                tb[r] = now() - t0;
+                tb[r] = program_seconds() - t0;
                 cdc_kernels_timing(k, &tlv[r], &tk);
             }
             const double tl_sum = median(tlv, reps); /* locate time, median */
@@ -205,22 +194,22 @@ int main(int argc, char **argv)
 
             /* alpha_p and touch-only: enough repetitions for >= 0.1 s each, at least 3, median */
             double ta[MAX_REPS], tt[MAX_REPS], tz[MAX_REPS];
-            t0 = now();
+            t0 = program_seconds();
             if (cdc_alpha_p(k, &p, alpha) != CDC_OK) die(md->name, cdc_last_error(ctx));
             memset(acc, 0, (size_t)nc * sizeof *acc);
             touch(off, cells, w, vol, nt, acc);
-            const double pair = now() - t0;
+            const double pair = program_seconds() - t0;
             int reps2 = (int)ceil(0.2 / (pair > 1e-9 ? pair : 1e-9));
             reps2 = reps2 < 3 ? 3 : reps2 > MAX_REPS ? MAX_REPS : reps2;
             for (int r = 0; r < reps2; ++r) {
-                t0 = now();
+                t0 = program_seconds();
                 if (cdc_alpha_p(k, &p, alpha) != CDC_OK) die(md->name, cdc_last_error(ctx));
-                ta[r] = now() - t0;
-                t0 = now();
+                ta[r] = program_seconds() - t0;
+                t0 = program_seconds();
                 memset(acc, 0, (size_t)nc * sizeof *acc);
-                const double t1 = now();
+                const double t1 = program_seconds();
                 touch(off, cells, w, vol, nt, acc);
-                tt[r] = now() - t1;
+                tt[r] = program_seconds() - t1;
                 tz[r] = t1 - t0;
             }
             const double t_alpha = median(ta, reps2), t_touch = median(tt, reps2), t_zero = median(tz, reps2);
@@ -254,6 +243,6 @@ int main(int argc, char **argv)
         box_mesh_destroy(&b);
     }
     fclose(csv);
-    printf("total %.1f s; results in %s\n", now() - t_all, out);
+    printf("total %.1f s; results in %s\n", program_seconds() - t_all, out);
     return 0;
 }

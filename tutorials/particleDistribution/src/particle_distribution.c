@@ -21,6 +21,7 @@
  */
 #include "../../../src/core/coarse_dem.h"
 #include "../../../src/core/tools/box_mesh.h"
+#include "../../../src/core/tools/program_util.h"
 
 #include <errno.h>
 #include <math.h>
@@ -28,7 +29,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 
 #define PI 3.14159265358979323846
 
@@ -40,13 +40,6 @@ static const double STATS_HALF = 20.0;   /* statistics: cells with |x|, |y| <= 2
 static const double ALPHA_MEAN = 0.3;
 
 /* ------------------------------------------------------------------ utilities */
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static void die(const char *what, const char *msg)
 {
@@ -67,11 +60,7 @@ static FILE *open_out(const char *dir, const char *name)
 static uint64_t rng_state;
 static double rnd(void)
 {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+    return program_uniform(&rng_state);
 }
 
 /* ------------------------------------------------------------------ particle placement */
@@ -176,9 +165,9 @@ int main(int argc, char **argv)
     double *xd = malloc(3 * sizeof(double) * (size_t)np);
     double *pos = malloc(3 * sizeof(double) * (size_t)np), *rad = malloc(sizeof(double) * (size_t)np);
     if (!xd || !pos || !rad) die("particles", "out of memory");
-    double t0 = now();
+    double t0 = program_seconds();
     const long attempts = place_particles(np, xd);
-    const double t_place = now() - t0;
+    const double t_place = program_seconds() - t0;
     const double vp = PI / 6.0 * D * D * D;
     const double vsum = np * vp;
     printf("%d particles (d = %g m, region mean alpha_p = %.6f) placed by RSA in %ld attempts, %.2f s\n", np, D,
@@ -200,7 +189,7 @@ int main(int argc, char **argv)
     const int NBIN = 100; /* histogram bins of width 0.01 on [0, 1) */
     static const uint8_t walls[6] = {CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL,
                                      CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};
-    const double t_all = now();
+    const double t_all = program_seconds();
 
     for (const char *mc = mesh_list; *mc; ++mc) {
         const int mj = *mc - '0';
@@ -208,7 +197,7 @@ int main(int argc, char **argv)
         const mesh_def md = MESHES[mj - 1];
         const double lo[3] = {-HALF_DOMAIN * D, -HALF_DOMAIN * D, 0.0};
         const double hi[3] = {HALF_DOMAIN * D, HALF_DOMAIN * D, THICKNESS * D};
-        const double tm = now();
+        const double tm = program_seconds();
         box_mesh b;
         if (box_mesh_create(&b, md.nx, md.ny, md.nz, lo, hi, walls, 0.0) != 0) die("box_mesh_create", "failed");
         cdc_context *ctx = NULL;
@@ -224,7 +213,7 @@ int main(int argc, char **argv)
         /* Delta x / d as Table I defines it: V_c^(1/3) / d */
         const double dx_over_d = cbrt(m->cell_volumes[0]) / D;
         printf("\nmesh M%d: %d x %d x %d = %d cells, dx/d = %.4f (setup %.2f s)\n", mj, md.nx, md.ny, md.nz, nc,
-               dx_over_d, now() - tm);
+               dx_over_d, program_seconds() - tm);
 
         /* statistics cells and the profile row (centre nearest y = 0; for even ny the row just above) */
         uint8_t *in_stats = malloc((size_t)nc);
@@ -257,13 +246,13 @@ int main(int argc, char **argv)
             dp.bandwidth = DIFFUSION_B * D;
 
             /* timed: kernel creation and build, alpha_p, diffusion */
-            const double ts = now();
+            const double ts = program_seconds();
             cdc_kernels *k = NULL;
             if (cdc_kernels_create(ctx, run->core, &prm, &k) != CDC_OK) die(run->name, cdc_last_error(ctx));
             if (cdc_kernels_build(k, &parts) != CDC_OK) die(run->name, cdc_last_error(ctx));
             if (cdc_alpha_p(k, &parts, alpha) != CDC_OK) die(run->name, cdc_last_error(ctx));
             if (run->diffuse && cdc_diffuse(ctx, &dp, alpha) != CDC_OK) die(run->name, cdc_last_error(ctx));
-            const double secs = now() - ts;
+            const double secs = program_seconds() - ts;
             const long entries = cdc_kernels_offsets(k)[np];
             cdc_kernels_destroy(k);
 
@@ -349,7 +338,7 @@ int main(int argc, char **argv)
         box_mesh_destroy(&b);
     }
     fclose(sum);
-    printf("\nall meshes and methods: %.2f s (placement %.2f s); results in %s/\n", now() - t_all, t_place, outdir);
+    printf("\nall meshes and methods: %.2f s (placement %.2f s); results in %s/\n", program_seconds() - t_all, t_place, outdir);
     free(xd);
     free(pos);
     free(rad);
