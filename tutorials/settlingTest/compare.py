@@ -8,31 +8,14 @@ Writes results/summary.csv (quantity, measured, reference, relative error, wall 
 results/velocity.csv; prints PASS/FAIL for the terminal velocity within 1 %.
 Usage: compare.py <case dir> <wall seconds>
 """
-import math, os, sys
+import os, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from settling_ode import settling
 
 case = sys.argv[1] if len(sys.argv) > 1 else "."
 wall = float(sys.argv[2]) if len(sys.argv) > 2 else float("nan")
-d, rho_p, rho_f, nu, g = 2e-3, 2500.0, 1000.0, 1e-6, 9.81
-V = math.pi / 6 * d**3
-m = rho_p * V
-
-def drag_K(ur):
-    """Di Felice, alpha = 1: K = pi/8 rho d^2 (0.63 sqrt|u_r| + 4.8 sqrt(nu/d))^2."""
-    return math.pi / 8 * rho_f * d * d * (0.63 * math.sqrt(ur) + 4.8 * math.sqrt(nu / d)) ** 2
-
-def accel(v):
-    return (-(rho_p - rho_f) * V * g + drag_K(abs(v)) * (-v)) / m
-
-# terminal velocity: K(v) v = (rho_p - rho_f) V g, by bisection
-lo, hi = 0.0, 10.0
-for _ in range(200):
-    mid = 0.5 * (lo + hi)
-    if drag_K(mid) * mid > (rho_p - rho_f) * V * g:
-        hi = mid
-    else:
-        lo = mid
-v_terminal = 0.5 * (lo + hi)
-
+d, rho_p, rho_f, nu = 2e-3, 2500.0, 1000.0, 1e-6
 rows = []
 with open(os.path.join(case, "post", "particle.txt")) as f:
     for line in f:
@@ -43,25 +26,15 @@ with open(os.path.join(case, "post", "particle.txt")) as f:
 if not rows:
     sys.exit("compare.py: no particle history in post/particle.txt")
 
-# analytic history (RK4 with the DEM output interval subdivided)
-v, t, h = 0.0, 0.0, 1e-5
-analytic = {}
-times = [r[0] for r in rows]
-k = 0
-tmax = times[-1]
-while t <= tmax + 1e-12:
-    while k < len(times) and times[k] <= t + 1e-12:
-        analytic[k] = v
-        k += 1
-    k1 = accel(v); k2 = accel(v + h / 2 * k1); k3 = accel(v + h / 2 * k2); k4 = accel(v + h * k3)
-    v += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-    t += h
+# analytic history at the DEM output times
+analytic, vt_signed, _ = settling(d, rho_p, rho_f, nu, [r[0] for r in rows])
+v_terminal = -vt_signed
 
 os.makedirs(os.path.join(case, "results"), exist_ok=True)
 with open(os.path.join(case, "results", "velocity.csv"), "w") as f:
     f.write("t_s,z_m,vz_sim_m_per_s,vz_analytic_m_per_s\n")
     for i, (t, z, vz) in enumerate(rows):
-        f.write(f"{t:.6g},{z:.6g},{vz:.6g},{analytic.get(i, float('nan')):.6g}\n")
+        f.write(f"{t:.6g},{z:.6g},{vz:.6g},{analytic[i]:.6g}\n")
 
 # measured terminal velocity: mean over the last 20 % of the history while still falling freely
 # (before the particle gets within 10 d of the bottom)

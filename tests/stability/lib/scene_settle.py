@@ -16,37 +16,17 @@ the terminal velocity; PASS only if the case stays within tol of the ODE (i.e. s
 """
 import argparse, math, os, sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, here)
+sys.path.insert(0, os.path.join(here, "..", "..", "..", "tutorials", "settlingTest"))
 import stablib
+import settling_ode
 
 
 def ode(p, times):
-    d = float(p["D_MM"]) * 1e-3
-    rp, rf, nu, g = float(p["RHO_P"]), float(p["RHO_F"]), float(p["NU_F"]), 9.81
-    V = math.pi / 6 * d ** 3
-    m = rp * V
-    K = lambda u: math.pi / 8 * rf * d * d * (0.63 * math.sqrt(abs(u)) + 4.8 * math.sqrt(nu / d)) ** 2
-    acc = lambda v: (-(rp - rf) * V * g - K(v) * v) / m
-    # terminal velocity by bisection (v < 0)
-    lo, hi = 0.0, 100.0
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if K(mid) * mid > (rp - rf) * V * g:
-            hi = mid
-        else:
-            lo = mid
-    vt = -0.5 * (lo + hi)
-    tau = m / K(abs(vt))
-    out, v, t, k = [], 0.0, 0.0, 0
-    h = min(1e-5, tau / 50)
-    for T in times:
-        while t < T - 1e-15:
-            hh = min(h, T - t)
-            k1 = acc(v); k2 = acc(v + hh / 2 * k1); k3 = acc(v + hh / 2 * k2); k4 = acc(v + hh * k3)
-            v += hh / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-            t += hh
-        out.append(v)
-    return out, vt, tau
+    """The ODE's velocities at the times, terminal velocity and response time for the scene's particle."""
+    return settling_ode.settling(float(p["D_MM"]) * 1e-3, float(p["RHO_P"]), float(p["RHO_F"]),
+                                 float(p["NU_F"]), times)
 
 
 def history(case):
