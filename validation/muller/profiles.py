@@ -84,20 +84,17 @@ def main():
                 den = sum(column(t, "alphaP")[k] for t in tl)
                 out.append(num / den if den > 1e-12 else float("nan"))
             return out
+        def write(name, what, column_name, mean_fn):
+            v, e = batch_stats(mean_fn)
+            with open(os.path.join(case, "results", f"profile_{name}_z{h}mm.csv"), "w") as f:
+                f.write(f"# time-averaged {what}, z = {h} mm, window ({t0}, {t1}] s, {n} samples, {B} batches of {size}\n")
+                f.write(f"x_m,{column_name},sem\n")
+                for k in range(len(y)):
+                    f.write(f"{y[k]:.6g},{v[k]:.6g},{e[k]:.3g}\n")
         if "alpha" in byt[ts[0]]:
-            v, e = batch_stats(mean_alpha)
-            with open(os.path.join(case, "results", f"profile_voidfraction_z{h}mm.csv"), "w") as f:
-                f.write(f"# time-averaged gas volume fraction, z = {h} mm, window ({t0}, {t1}] s, {n} samples, {B} batches of {size}\n")
-                f.write("x_m,void_fraction,sem\n")
-                for k in range(len(y)):
-                    f.write(f"{y[k]:.6g},{v[k]:.6g},{e[k]:.3g}\n")
+            write("voidfraction", "gas volume fraction", "void_fraction", mean_alpha)
         if "alphaPUs_2" in byt[ts[0]] and "alphaP" in byt[ts[0]]:
-            v, e = batch_stats(mean_vz)
-            with open(os.path.join(case, "results", f"profile_vz_z{h}mm.csv"), "w") as f:
-                f.write(f"# time-averaged (solid-weighted) vertical particle velocity, z = {h} mm, window ({t0}, {t1}] s, {n} samples, {B} batches of {size}\n")
-                f.write("x_m,vz_particle_m_per_s,sem\n")
-                for k in range(len(y)):
-                    f.write(f"{y[k]:.6g},{v[k]:.6g},{e[k]:.3g}\n")
+            write("vz", "(solid-weighted) vertical particle velocity", "vz_particle_m_per_s", mean_vz)
         info.append(f"z = {h} mm: {n} samples in ({t0}, {t1}] s, {B} batches of {size} samples ({size * 0.01:.3g} s)")
     with open(os.path.join(case, "results", "profiles_info.txt"), "w") as f:
         f.write("\n".join(info) + "\n")
