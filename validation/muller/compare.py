@@ -30,7 +30,43 @@ def interp(x, xs, ys):
             t = (x - xs[i - 1]) / (xs[i] - xs[i - 1])
             return ys[i - 1] + t * (ys[i] - ys[i - 1])
 
-QUANTITY = {"voidfraction": "void_fraction", "vz": "vz_particle_m_per_s"}
+QUANTITY = {"voidfraction": "void_fraction", "vz": "vz_particle_m_per_s",
+            "vzbinned": "vz_particle_binned_m_per_s"}
+
+def compare_one(data_path, sim_path, q, h, U, out):
+    """RMS and maximum error of one simulated profile against one data file, and its PNG."""
+    _, dx, dy, _ = read_profile(data_path)
+    _, sx, sy, se = read_profile(sim_path)
+    err = [interp(x, sx, sy) - y for x, y in zip(dx, dy)]
+    rms = math.sqrt(sum(e * e for e in err) / len(err))
+    mx = max(abs(e) for e in err)
+    sem = [e for e in se if not math.isnan(e)]
+    mean_sem = sum(sem) / len(sem) if sem else float("nan")
+    row = {"quantity": QUANTITY.get(q, q), "z_mm": h, "rms_error": rms, "max_error": mx,
+           "mean_batch_sem": mean_sem, "n_points": len(dx)}
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(5, 3.6))
+        if sem:
+            ax.errorbar([x * 1e3 for x in sx], sy, yerr=[0 if math.isnan(e) else 2 * e for e in se],
+                        fmt="-", capsize=2, label="simulation (±2 batch SEM)")
+        else:   # a single batch: no error bar to draw
+            ax.plot([x * 1e3 for x in sx], sy, "-", label="simulation (one batch: no SEM)")
+        ax.plot([x * 1e3 for x in dx], dy, "ko", ms=4, label="Müller et al. (MR)")
+        ax.set_xlabel("distance from the left wall (mm)")
+        ax.set_ylabel({"voidfraction": "time-averaged gas fraction", "vz": "time-averaged particle v_z (m/s)",
+                       "vzbinned": "time-averaged particle v_z, binned (m/s)"}.get(q, q))
+        ax.set_title(f"U = {U} m/s, z = {h} mm: RMS {rms:.3g}")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, f"{q}_z{h}mm.png"), dpi=110)
+        plt.close(fig)
+    except ImportError:
+        pass
+    return row
+
 
 def compare(results, data_dir, U, out):
     os.makedirs(out, exist_ok=True)
@@ -39,40 +75,14 @@ def compare(results, data_dir, U, out):
         m = re.match(r"mueller_U([0-9.]+)_(\w+?)_z([0-9.]+)mm_MR\.csv", os.path.basename(path))
         if not m or abs(float(m.group(1)) - U) > 1e-9:
             continue
-        q, h = m.group(2), m.group(3)
-        sim_path = os.path.join(results, f"profile_{q}_z{h}mm.csv")
-        if not os.path.exists(sim_path):
-            print(f"compare.py: no simulated profile {sim_path} for {os.path.basename(path)}")
-            continue
-        _, dx, dy, _ = read_profile(path)
-        _, sx, sy, se = read_profile(sim_path)
-        err = [interp(x, sx, sy) - y for x, y in zip(dx, dy)]
-        rms = math.sqrt(sum(e * e for e in err) / len(err))
-        mx = max(abs(e) for e in err)
-        sem = [e for e in se if not math.isnan(e)]
-        mean_sem = sum(sem) / len(sem) if sem else float("nan")
-        rows.append({"quantity": QUANTITY.get(q, q), "z_mm": h, "rms_error": rms, "max_error": mx,
-                     "mean_batch_sem": mean_sem, "n_points": len(dx)})
-        try:
-            import matplotlib
-            matplotlib.use("Agg")
-            import matplotlib.pyplot as plt
-            fig, ax = plt.subplots(figsize=(5, 3.6))
-            if sem:
-                ax.errorbar([x * 1e3 for x in sx], sy, yerr=[0 if math.isnan(e) else 2 * e for e in se],
-                            fmt="-", capsize=2, label="simulation (±2 batch SEM)")
-            else:   # a single batch: no error bar to draw
-                ax.plot([x * 1e3 for x in sx], sy, "-", label="simulation (one batch: no SEM)")
-            ax.plot([x * 1e3 for x in dx], dy, "ko", ms=4, label="Müller et al. (MR)")
-            ax.set_xlabel("distance from the left wall (mm)")
-            ax.set_ylabel({"voidfraction": "time-averaged gas fraction", "vz": "time-averaged particle v_z (m/s)"}.get(q, q))
-            ax.set_title(f"U = {U} m/s, z = {h} mm: RMS {rms:.3g}")
-            ax.legend(fontsize=8)
-            fig.tight_layout()
-            fig.savefig(os.path.join(out, f"{q}_z{h}mm.png"), dpi=110)
-            plt.close(fig)
-        except ImportError:
-            pass
+        q_data, h = m.group(2), m.group(3)
+        if not os.path.exists(os.path.join(results, f"profile_{q_data}_z{h}mm.csv")):
+            print(f"compare.py: no simulated profile profile_{q_data}_z{h}mm.csv in {results} for {os.path.basename(path)}")
+        # the data's quantity and the variants the run may also have (vzbinned: binned particles)
+        for q in (q_data, q_data + "binned"):
+            sim_path = os.path.join(results, f"profile_{q}_z{h}mm.csv")
+            if os.path.exists(sim_path):
+                rows.append(compare_one(path, sim_path, q, h, U, out))
     with open(os.path.join(out, "errors.csv"), "w") as f:
         f.write("quantity,z_mm,rms_error,max_error,mean_batch_sem,n_points\n")
         for r in rows:

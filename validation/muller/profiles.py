@@ -8,7 +8,11 @@ Reads the instantaneous samples that the case's `profiles` function object write
 averages those with t_start < t <= t_end:
   - gas volume fraction: the time mean of alpha;
   - vertical particle velocity: the solid-weighted mean mean(alphaP * Us_z) / mean(alphaP), the
-    average velocity of the solid passing through the point.
+    average velocity of the solid passing through the point. alphaPUs is spread with the run's own
+    kernels (so a wide kernel smooths the profile); when the run also samples alphaPBinned and
+    alphaPUsBinned (couplingProperties binnedParticleFields on: each particle counted in the cell of
+    its centre, whatever the model), the same mean of those is written as profile_vzbinned, a
+    model-independent velocity profile.
 Uncertainty: batch means. The window is cut into B consecutive batches (default 10); the standard
 error of the mean is std(batch means) / sqrt(B) (for the velocity, the batch ratios). Batches much
 longer than the bubble period (~0.1-0.2 s here) make the batch means nearly independent; with short
@@ -77,13 +81,15 @@ def main():
             return allv, sem
         def mean_alpha(tl):
             return [sum(column(t, "alpha")[k] for t in tl) / len(tl) for k in range(len(y))]
-        def mean_vz(tl):
-            out = []
-            for k in range(len(y)):
-                num = sum(column(t, "alphaPUs_2")[k] for t in tl)
-                den = sum(column(t, "alphaP")[k] for t in tl)
-                out.append(num / den if den > 1e-12 else float("nan"))
-            return out
+        def mean_ratio(num_key, den_key):
+            def mean(tl):
+                out = []
+                for k in range(len(y)):
+                    num = sum(column(t, num_key)[k] for t in tl)
+                    den = sum(column(t, den_key)[k] for t in tl)
+                    out.append(num / den if den > 1e-12 else float("nan"))
+                return out
+            return mean
         def write(name, what, column_name, mean_fn):
             v, e = batch_stats(mean_fn)
             with open(os.path.join(case, "results", f"profile_{name}_z{h}mm.csv"), "w") as f:
@@ -94,7 +100,11 @@ def main():
         if "alpha" in byt[ts[0]]:
             write("voidfraction", "gas volume fraction", "void_fraction", mean_alpha)
         if "alphaPUs_2" in byt[ts[0]] and "alphaP" in byt[ts[0]]:
-            write("vz", "(solid-weighted) vertical particle velocity", "vz_particle_m_per_s", mean_vz)
+            write("vz", "(solid-weighted) vertical particle velocity", "vz_particle_m_per_s",
+                  mean_ratio("alphaPUs_2", "alphaP"))
+        if "alphaPUsBinned_2" in byt[ts[0]] and "alphaPBinned" in byt[ts[0]]:
+            write("vzbinned", "(solid-weighted) vertical particle velocity, particles binned by their centre's cell",
+                  "vz_particle_m_per_s", mean_ratio("alphaPUsBinned_2", "alphaPBinned"))
         info.append(f"z = {h} mm: {n} samples in ({t0}, {t1}] s, {B} batches of {size} samples ({size * 0.01:.3g} s)")
     with open(os.path.join(case, "results", "profiles_info.txt"), "w") as f:
         f.write("\n".join(info) + "\n")

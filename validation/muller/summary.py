@@ -7,7 +7,9 @@ For each run (tutorials/fluidizedBedMuller/runs/<model>_dx<..>_U<..>_<mode>): th
 results/comparison/errors.csv (compare.py), the wall time (sum of wall_seconds.txt, one line per
 start or restart) and the coupling share of it from the solver's last stage-timer line (locate,
 kernel, smoothing incl. the packing limiter, forces, exchange over all stages). Copies each run's
-profile CSVs and comparison plots to <out>/<run>/ and writes <out>/error_vs_runtime.{csv,md,png}.
+profile CSVs and comparison plots to <out>/<run>_<commit>/ (runs of one model at different commits
+side by side) and writes <out>/error_vs_runtime.{csv,md,png}. Where a run also has the binned
+particle velocity (profile_vzbinned, binnedParticleFields on), its error is a further column.
 """
 import glob, os, re, shutil, sys
 
@@ -49,28 +51,33 @@ def main():
         total = sum(st.values()) or float("nan")
         coupling = sum(st.get(k, 0) for k in ("locate", "kernel", "smoothing", "forces", "exchange"))
         info = open(os.path.join(run, "results", "profiles_info.txt")).readline().strip()
-        rows.append(dict(run=name, model=name.split("_")[0], wall=wall, core=core, ranks=ranks, commit=commit, coupling_share=coupling / total,
+        label = f"{name}_{commit.replace(' ', '+')}"
+        nan3 = (float("nan"),) * 3
+        rows.append(dict(run=label, model=name.split("_")[0], wall=wall, core=core, ranks=ranks, commit=commit, coupling_share=coupling / total,
                          fluid_share=st.get("fluid", 0) / total, dem_share=st.get("DEM", 0) / total,
                          void_rms=errs.get(("void_fraction", "16.4"), (float("nan"),) * 3)[0],
                          void_sem=errs.get(("void_fraction", "16.4"), (float("nan"),) * 3)[2],
                          vz_rms=errs.get(("vz_particle_m_per_s", "15"), (float("nan"),) * 3)[0],
-                         vz_sem=errs.get(("vz_particle_m_per_s", "15"), (float("nan"),) * 3)[2], window=info))
-        dest = os.path.join(out, name)
+                         vz_sem=errs.get(("vz_particle_m_per_s", "15"), (float("nan"),) * 3)[2],
+                         vzb_rms=errs.get(("vz_particle_binned_m_per_s", "15"), nan3)[0],
+                         vzb_sem=errs.get(("vz_particle_binned_m_per_s", "15"), nan3)[2], window=info))
+        dest = os.path.join(out, label)
         os.makedirs(dest, exist_ok=True)
         for f in glob.glob(os.path.join(run, "results", "*.csv")) + glob.glob(os.path.join(run, "results", "*.txt")):
             shutil.copy(f, dest)
         for f in glob.glob(os.path.join(run, "results", "comparison", "*")):
             shutil.copy(f, dest)
     with open(os.path.join(out, "error_vs_runtime.csv"), "w") as f:
-        f.write("run,model,commit,ranks,wall_time_s,core_seconds,coupling_share,fluid_share,dem_share,voidfraction_z16.4_rms,voidfraction_z16.4_mean_sem,vz_z15_rms_m_per_s,vz_z15_mean_sem\n")
+        f.write("run,model,commit,ranks,wall_time_s,core_seconds,coupling_share,fluid_share,dem_share,voidfraction_z16.4_rms,voidfraction_z16.4_mean_sem,vz_z15_rms_m_per_s,vz_z15_mean_sem,vz_binned_z15_rms_m_per_s,vz_binned_z15_mean_sem\n")
         for r in rows:
             f.write(f"{r['run']},{r['model']},{r['commit']},{r['ranks']},{r['wall']:.0f},{r['core']:.0f},{r['coupling_share']:.3f},{r['fluid_share']:.3f},{r['dem_share']:.3f},"
-                    f"{r['void_rms']:.4f},{r['void_sem']:.4f},{r['vz_rms']:.4f},{r['vz_sem']:.4f}\n")
+                    f"{r['void_rms']:.4f},{r['void_sem']:.4f},{r['vz_rms']:.4f},{r['vz_sem']:.4f},{r['vzb_rms']:.4f},{r['vzb_sem']:.4f}\n")
     with open(os.path.join(out, "error_vs_runtime.md"), "w") as f:
-        f.write("| run | commit | ranks | wall time (s) | core-seconds | coupling share | gas fraction RMS, z = 16.4 mm | particle v_z RMS, z = 15 mm (m/s) |\n|---|---|---|---|---|---|---|---|\n")
+        f.write("| run | commit | ranks | wall time (s) | core-seconds | coupling share | gas fraction RMS, z = 16.4 mm | particle v_z RMS, z = 15 mm (m/s) | binned particle v_z RMS, z = 15 mm (m/s) |\n|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
             share = "n/a" if r['coupling_share'] != r['coupling_share'] else f"{100*r['coupling_share']:.1f} %"
-            f.write(f"| {r['run']} | {r['commit']} | {r['ranks']} | {r['wall']:.0f} | {r['core']:.0f} | {share} | {r['void_rms']:.3f} (SEM {r['void_sem']:.3f}) | {r['vz_rms']:.3f} (SEM {r['vz_sem']:.3f}) |\n")
+            binned = "n/a" if r['vzb_rms'] != r['vzb_rms'] else f"{r['vzb_rms']:.3f} (SEM {r['vzb_sem']:.3f})"
+            f.write(f"| {r['run']} | {r['commit']} | {r['ranks']} | {r['wall']:.0f} | {r['core']:.0f} | {share} | {r['void_rms']:.3f} (SEM {r['void_sem']:.3f}) | {r['vz_rms']:.3f} (SEM {r['vz_sem']:.3f}) | {binned} |\n")
         if rows:
             f.write(f"\nAveraging window: {rows[0]['window']}\n")
     try:
@@ -86,7 +93,7 @@ def main():
                     if x != x:
                         continue   # no stage timers (the DPMFoam baseline): no coupling share
                     ax[i][j].errorbar(x, r[key], yerr=r[sem], fmt="o", capsize=3)
-                    ax[i][j].annotate(r["model"], (x, r[key]), textcoords="offset points", xytext=(4, 4))
+                    ax[i][j].annotate(f"{r['model']} {r['commit']}", (x, r[key]), textcoords="offset points", xytext=(4, 4))
             ax[i][0].set_ylabel(label)
             ax[i][1].set_ylabel(label)
             ax[i][0].set_xlabel("run time (core-seconds: wall x MPI ranks)")

@@ -32,6 +32,7 @@ coarseDemCoupling::coarseDemCoupling
     demMesh_(mesh),
     voidFraction_(dict_, demMesh_),
     backgroundKernels_(nullptr),
+    binKernels_(nullptr),
     needs_(0),
     halo_(mesh),
     solidVolumeParticles_(0), solidVolumeCells_(0), momentumImbalance_(0), forceScale_(0),
@@ -132,6 +133,34 @@ coarseDemCoupling::coarseDemCoupling
         );
     }
 
+    if (dict_.lookupOrDefault<Switch>("binnedParticleFields", false))
+    {
+        cdc_kernel_params prm = {};
+        if (cdc_kernels_create(demMesh_.context(), "centre", &prm, &binKernels_) != CDC_OK)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "binnedParticleFields in " << dict_.name() << ": " << cdc_last_error(demMesh_.context())
+                << exit(FatalIOError);
+        }
+        const word t = mesh.time().timeName();
+        alphaPBinned.reset
+        (
+            new volScalarField
+            (
+                IOobject("alphaPBinned", t, mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
+                mesh, dimensionedScalar(dimless, Zero), zeroGradientFvPatchScalarField::typeName
+            )
+        );
+        alphaPUsBinned.reset
+        (
+            new volVectorField
+            (
+                IOobject("alphaPUsBinned", t, mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
+                mesh, dimensionedVector(dimVelocity, Zero), zeroGradientFvPatchVectorField::typeName
+            )
+        );
+    }
+
     dem_.reset(new liggghtsDem(mesh, dict_));
     checkDemTimestep(dem_->lammps(), dict_);   // vs Rayleigh and Hertz times: warn / stop
     keepRestartForces_ = dem_->restarted();
@@ -147,6 +176,7 @@ coarseDemCoupling::coarseDemCoupling
 coarseDemCoupling::~coarseDemCoupling()
 {
     cdc_kernels_destroy(backgroundKernels_);
+    cdc_kernels_destroy(binKernels_);
 }
 
 void coarseDemCoupling::evolveDem()
@@ -203,13 +233,25 @@ void coarseDemCoupling::gather(const cdc_kernels* k, const double* field, int nc
     std::copy(buffer_.begin(), buffer_.begin() + size_t(n)*ncomp, out);
 }
 
-void coarseDemCoupling::spread(const double* local, int ncomp, double* out)
+void coarseDemCoupling::spread(const cdc_kernels* k, const double* local, int ncomp, double* out)
 {
     const label n = particles_.size();
     halo_.toGhosts(local, ncomp, ghostBuffer_);
     buffer_.assign(local, local + size_t(n)*ncomp);
     buffer_.insert(buffer_.end(), ghostBuffer_.begin(), ghostBuffer_.end());
-    demMesh_.check(cdc_spread(voidFraction_.kernels(), buffer_.data(), ncomp, out), "spread");
+    demMesh_.check(cdc_spread(k, buffer_.data(), ncomp, out), "spread");
+}
+
+void coarseDemCoupling::binParticles(const cdc_particles& local, const cdc_particles& ghosts)
+{
+    buildKernels(demMesh_, binKernels_, local, ghosts, halo_, "binnedParticleFields (centre kernels)");
+    spread(binKernels_, volume_.data(), 1, alphaPBinned().primitiveFieldRef().data());
+    vectorField q(local.n);
+    forAll(q, i) q[i] = volume_[i]*state_.v[i];
+    spread(binKernels_, reinterpret_cast<const double*>(q.cdata()), 3,
+           reinterpret_cast<double*>(alphaPUsBinned().primitiveFieldRef().data()));
+    alphaPBinned().correctBoundaryConditions();
+    alphaPUsBinned().correctBoundaryConditions();
 }
 
 void coarseDemCoupling::couple
@@ -374,6 +416,7 @@ void coarseDemCoupling::couple
                reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data()));
         alphaPUs().correctBoundaryConditions();
     }
+    if (binKernels_) binParticles(cp, cg);
     Ksl.correctBoundaryConditions();
     KslUs.correctBoundaryConditions();
     fFluid.correctBoundaryConditions();
