@@ -50,6 +50,8 @@ check alphaMin_0 's/^alphaMin .*/alphaMin 0;/' "must be in (0, 1)"
 check couplingInterval_0 's/^couplingInterval .*/couplingInterval 0;/' "entry couplingInterval 0"
 check couplingInterval_neg 's/^couplingInterval .*/couplingInterval -5;/' "must be a positive number of DEM steps"
 check modelType_C 's/^modelType .*/modelType C;/' "valid model types: A"
+check difelice_reynolds 's/GidaspowDrag/DiFeliceDrag/; $a DiFeliceDragProps { reynoldsNumber interstitial; }' \
+    "entry reynoldsNumber interstitial in"
 check gradP_and_Archimedes 's/GidaspowDrag gradPForce/GidaspowDrag gradPForce Archimedes/' "counted twice"
 check dem_script_missing 's|^demScript .*|demScript "DEM/nothere.liggghts";|' "DEM/nothere.liggghts\" not found"
 check dem_no_fix '' "defines no fix 'cfd' of style couple/coarse" "sed -i '/couple\/coarse/d' DEM/in.liggghts"

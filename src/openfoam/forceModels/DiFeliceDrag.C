@@ -3,10 +3,17 @@
     Zhang et al., Phys. Fluids 35, 113330 (2023), eqs. A4-A7:
         f = pi/8 Cd rho d^2 alpha^(2-chi) |u_r| u_r,
         Cd = (0.63 + 4.8/sqrt(Re))^2,  chi = 3.7 - 0.65 exp(-(1.5 - log10 Re)^2/2),
-        Re = |u_r| d / nu                       (eq. A7 as printed)
-    so K = pi/8 rho d^2 alpha^(2-chi) (0.63 sqrt|u_r| + 4.8 sqrt(nu/d))^2,
-    finite as |u_r| -> 0. Coarse graining: the grain gets (its volume / the
-    real particle's volume) times the force of one real particle.
+    so K = pi/8 rho d^2 alpha^(2-chi) (0.63 sqrt|u_r| + 4.8 sqrt(nu/(alpha d)))^2
+    (superficial Re), finite as |u_r| -> 0. The particle Reynolds number:
+        DiFeliceDragProps { reynoldsNumber superficial; }   // default
+            Re = alpha |u_r| d / nu: Di Felice's own definition (the superficial
+            slip velocity; the voidage function was fitted with it), as in CFDEM
+        DiFeliceDragProps { reynoldsNumber slip; }
+            Re = |u_r| d / nu: eq. A7 of Zhang et al. as printed. At alpha 0.42
+            and u_r = 0.34/0.42 m/s (about minimum fluidization of the Mueller
+            bed) it gives 36 % less drag than the superficial form.
+    Coarse graining: the grain gets (its volume / the real particle's volume)
+    times the force of one real particle.
 \*---------------------------------------------------------------------------*/
 #include "forceModel.H"
 #include "addToRunTimeSelectionTable.H"
@@ -17,9 +24,25 @@ namespace Foam
 
 class DiFeliceDrag : public forceModel
 {
+    bool superficialRe_;   // Re = alpha |u_r| d/nu (true) or |u_r| d/nu
+
 public:
     TypeName("DiFeliceDrag");
-    DiFeliceDrag(const word& name, const dictionary& props) : forceModel(name, props) {}
+    DiFeliceDrag(const word& name, const dictionary& props)
+    :
+        forceModel(name, props),
+        superficialRe_(true)
+    {
+        const word re = props.lookupOrDefault<word>("reynoldsNumber", "superficial");
+        if (re != "superficial" && re != "slip")
+        {
+            FatalIOErrorInFunction(props)
+                << "entry reynoldsNumber " << re << " in " << props.name() << " is not valid" << nl
+                << "    valid: superficial (alpha |u_r| d/nu, Di Felice 1994) or slip (|u_r| d/nu)"
+                << exit(FatalIOError);
+        }
+        superficialRe_ = (re == "superficial");
+    }
     bool isDrag() const override { return true; }
 
     void dragCoefficient(const particleFluidState& s, const fluidProperties& fl, scalarField& K) const override
@@ -29,10 +52,12 @@ public:
         {
             const scalar d = s.d[i];
             const scalar ur = mag(s.Uf[i] - s.v[i]);
-            const scalar Re = max(ur*d/fl.nu, SMALL);
+            const scalar a = superficialRe_ ? s.alphaf[i] : 1;   // Re = a |u_r| d/nu
+            const scalar Re = max(a*ur*d/fl.nu, SMALL);
             const scalar chi = 3.7 - 0.65*exp(-sqr(1.5 - log10(Re))/2);
             const scalar nReal = s.volume[i]/(pi/6*d*d*d);
-            K[i] = nReal*pi/8*fl.rho*d*d*pow(s.alphaf[i], 2 - chi)*sqr(0.63*sqrt(ur) + 4.8*sqrt(fl.nu/d));
+            // Cd |u_r|^2 = (0.63 sqrt|u_r| + 4.8 sqrt(nu/(a d)))^2 |u_r|: finite as |u_r| -> 0
+            K[i] = nReal*pi/8*fl.rho*d*d*pow(s.alphaf[i], 2 - chi)*sqr(0.63*sqrt(ur) + 4.8*sqrt(fl.nu/(a*d)));
         }
     }
 };
