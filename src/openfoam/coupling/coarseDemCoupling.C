@@ -242,13 +242,14 @@ void coarseDemCoupling::spread(const cdc_kernels* k, const double* local, int nc
     demMesh_.check(cdc_spread(k, buffer_.data(), ncomp, out), "spread");
 }
 
-void coarseDemCoupling::binParticles(const cdc_particles& local, const cdc_particles& ghosts)
+void coarseDemCoupling::binParticles
+(
+    const cdc_particles& local, const cdc_particles& ghosts, const vectorField& volumeVelocity
+)
 {
     buildKernels(demMesh_, binKernels_, local, ghosts, halo_, "binnedParticleFields (centre kernels)");
     spread(binKernels_, volume_.data(), 1, alphaPBinned().primitiveFieldRef().data());
-    vectorField q(local.n);
-    forAll(q, i) q[i] = volume_[i]*state_.v[i];
-    spread(binKernels_, reinterpret_cast<const double*>(q.cdata()), 3,
+    spread(binKernels_, reinterpret_cast<const double*>(volumeVelocity.cdata()), 3,
            reinterpret_cast<double*>(alphaPUsBinned().primitiveFieldRef().data()));
     alphaPBinned().correctBoundaryConditions();
     alphaPUsBinned().correctBoundaryConditions();
@@ -409,14 +410,15 @@ void coarseDemCoupling::couple
         forAll(q, i) q[i] = -(K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i])/rho;
     }
     spread(reinterpret_cast<const double*>(q.cdata()), 3, reinterpret_cast<double*>(fFluid.primitiveFieldRef().data()));
+    // particle volume x velocity, spread with the method's kernels and/or binned by centre
+    if (alphaPUs.valid() || binKernels_) forAll(q, i) q[i] = volume_[i]*state_.v[i];
     if (alphaPUs.valid())
     {
-        forAll(q, i) q[i] = volume_[i]*state_.v[i];
         spread(reinterpret_cast<const double*>(q.cdata()), 3,
                reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data()));
         alphaPUs().correctBoundaryConditions();
     }
-    if (binKernels_) binParticles(cp, cg);
+    if (binKernels_) binParticles(cp, cg, q);
     Ksl.correctBoundaryConditions();
     KslUs.correctBoundaryConditions();
     fFluid.correctBoundaryConditions();
