@@ -90,11 +90,13 @@ int main(int argc, char **argv)
 {
     const char *out = "results/kernels.csv";
     const char *list = "1000,10000,100000,1000000";
+    const char *only = NULL; /* -m: time one method (by its bench name), e.g. under perf */
     for (int a = 1; a < argc; ++a) {
         if (!strcmp(argv[a], "-o") && a + 1 < argc) out = argv[++a];
         else if (!strcmp(argv[a], "-n") && a + 1 < argc) list = argv[++a];
+        else if (!strcmp(argv[a], "-m") && a + 1 < argc) only = argv[++a];
         else {
-            fprintf(stderr, "usage: %s [-o CSV] [-n N1,N2,...]\n", argv[0]);
+            fprintf(stderr, "usage: %s [-o CSV] [-n N1,N2,...] [-m METHOD]\n", argv[0]);
             return 2;
         }
     }
@@ -163,6 +165,7 @@ int main(int argc, char **argv)
 
         for (int m = 0; m < 6; ++m) {
             const method_def *md = methods + m;
+            if (only && strcmp(only, md->name)) continue;
             const int32_t nt = (int32_t)(md->cap && N > md->cap ? md->cap : N);
             cdc_particles p = {nt, pos, rad, NULL, hints};
             cdc_kernels *k = NULL;

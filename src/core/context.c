@@ -52,20 +52,6 @@ int cdc_dvec_reserve(cdc_dvec *a, size_t cap)
     return 0;
 }
 
-int cdc_ivec_push(cdc_ivec *a, int32_t x)
-{
-    if (a->n == a->cap && cdc_ivec_reserve(a, a->n + 1)) return -1;
-    a->v[a->n++] = x;
-    return 0;
-}
-
-int cdc_dvec_push(cdc_dvec *a, double x)
-{
-    if (a->n == a->cap && cdc_dvec_reserve(a, a->n + 1)) return -1;
-    a->v[a->n++] = x;
-    return 0;
-}
-
 void cdc_ivec_free(cdc_ivec *a) { free(a->v); a->v = NULL; a->n = a->cap = 0; }
 void cdc_dvec_free(cdc_dvec *a) { free(a->v); a->v = NULL; a->n = a->cap = 0; }
 
