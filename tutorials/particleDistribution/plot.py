@@ -68,6 +68,14 @@ def grid_axes(n, ncol, w=3.4, h=3.0):
     return fig, axes.flat
 
 
+def label_panel(ax, title, xlabel, ylabel):
+    """The small-print title and axis labels of one panel of a grid figure."""
+    ax.set_title(title, fontsize=9)
+    ax.set_xlabel(xlabel, fontsize=8)
+    ax.set_ylabel(ylabel, fontsize=8)
+    ax.tick_params(labelsize=7)
+
+
 def fig6():
     present = [(t, l) for t, l in METHODS if os.path.exists(path("field_%s_M2.csv" % t))]
     if not present:
@@ -84,10 +92,7 @@ def fig6():
         ax.set_xlim(-40, 40)
         ax.set_ylim(-40, 40)
         ax.set_aspect("equal")
-        ax.set_title(label, fontsize=9)
-        ax.set_xlabel("x/d", fontsize=8)
-        ax.set_ylabel("y/d", fontsize=8)
-        ax.tick_params(labelsize=7)
+        label_panel(ax, label, "x/d", "y/d")
     fig.suptitle("alpha_p, mid-z layer, dx/d = 1 (M2); colour 0..0.63, window |x|,|y| <= 40d", fontsize=10)
     fig.tight_layout(rect=(0, 0, 0.93, 0.96))
     cax = fig.add_axes((0.94, 0.15, 0.015, 0.7))
@@ -106,10 +111,7 @@ def fig7():
         ax.axhline(0.3, color="k", lw=0.5, ls=":")
         ax.set_xlim(-40, 40)
         ax.set_ylim(0, ALPHA_MAX)
-        ax.set_title(label, fontsize=9)
-        ax.set_xlabel("x/d", fontsize=8)
-        ax.set_ylabel("alpha_p", fontsize=8)
-        ax.tick_params(labelsize=7)
+        label_panel(ax, label, "x/d", "alpha_p")
     axes[0].legend(fontsize=7, loc="upper right")
     fig.suptitle("alpha_p along y = 0 (row of cells nearest y = 0, averaged over z); axis clipped at 0.63 as in the seed", fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.97))
@@ -135,10 +137,7 @@ def fig8():
         ax.bar(lo, dens, width=hi - lo, align="edge", color="tab:blue", edgecolor="none")
         ax.axvline(0.3, color="k", lw=0.5, ls=":")
         ax.set_xlim(0, 0.7)
-        ax.set_title(label, fontsize=9)
-        ax.set_xlabel("alpha_p", fontsize=8)
-        ax.set_ylabel("probability density", fontsize=8)
-        ax.tick_params(labelsize=7)
+        label_panel(ax, label, "alpha_p", "probability density")
     fig.suptitle("alpha_p histograms, dx/d = 1 (M2), cells with |x|,|y| <= 20d; bin 0.01", fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.96))
     fig.savefig(path("fig8_histograms_M2.png"), dpi=110)
