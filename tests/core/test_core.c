@@ -17,6 +17,36 @@ static int n_pass, n_fail;
 static const uint8_t ALL_WALLS[6] = {CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL,
                                      CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};
 
+/* Most tests: a box of nx x ny x nz cubic cells of side CUBE_DX from the origin, walls all round,
+ * and its context. Open returns non-zero (after a failed CHECK) if either cannot be made. */
+#define CUBE_DX 0.01
+typedef struct { box_mesh b; cdc_context *ctx; double hi[3]; } cube_case;
+
+static int cube_case_open(cube_case *t, int nx, int ny, int nz)
+{
+    const double lo[3] = {0, 0, 0};
+    t->hi[0] = nx * CUBE_DX;
+    t->hi[1] = ny * CUBE_DX;
+    t->hi[2] = nz * CUBE_DX;
+    t->ctx = NULL;
+    if (box_mesh_create(&t->b, nx, ny, nz, lo, t->hi, ALL_WALLS, 0.0) != 0) {
+        CHECK(0, "box mesh %dx%dx%d", nx, ny, nz);
+        return -1;
+    }
+    if (cdc_context_create(&t->b.mesh, &t->ctx) != CDC_OK) {
+        CHECK(0, "context: %s", cdc_create_error());
+        box_mesh_destroy(&t->b);
+        return -1;
+    }
+    return 0;
+}
+
+static void cube_case_close(cube_case *t)
+{
+    cdc_context_destroy(t->ctx);
+    box_mesh_destroy(&t->b);
+}
+
 static void run(const char *name, void (*fn)(void))
 {
     check_failures_in_test = 0;
@@ -302,11 +332,11 @@ static int make_particles(unsigned long long *s, const double hi[3], double dx, 
 
 static void test_conservation_all_methods(void)
 {
-    const double dx = 0.01, lo[3] = {0, 0, 0}, hi[3] = {20 * dx, 16 * dx, 12 * dx};
-    box_mesh b;
-    box_mesh_create(&b, 20, 16, 12, lo, hi, ALL_WALLS, 0.0);
-    cdc_context *ctx = NULL;
-    CHECK(cdc_context_create(&b.mesh, &ctx) == CDC_OK, "context");
+    cube_case t;
+    if (cube_case_open(&t, 20, 16, 12)) return;
+    const double dx = CUBE_DX;
+    const double *hi = t.hi;
+    cdc_context *ctx = t.ctx;
     enum { NP = 300 };
     static double x[3 * NP], r[NP];
     unsigned long long s = 2024;
@@ -316,7 +346,7 @@ static void test_conservation_all_methods(void)
     for (int i = 0; i < n; ++i) vtot += 4.0 / 3.0 * PI * r[i] * r[i] * r[i];
     method_case cases[16];
     const int nm = method_cases(dx, cases);
-    double *alpha = malloc(b.mesh.n_cells * sizeof(double));
+    double *alpha = malloc(t.b.mesh.n_cells * sizeof(double));
     for (int m = 0; m < nm; ++m) {
         cdc_kernels *k = NULL;
         CHECK(cdc_kernels_create(ctx, cases[m].method, &cases[m].prm, &k) == CDC_OK, "%s: %s", cases[m].method,
@@ -332,7 +362,7 @@ static void test_conservation_all_methods(void)
             for (int e = off[i]; e < off[i + 1]; ++e) {
                 sum += w[e];
                 if (w[e] < min_w) min_w = w[e];
-                CHECK(cells[e] >= 0 && cells[e] < b.mesh.n_cells, "cell index");
+                CHECK(cells[e] >= 0 && cells[e] < t.b.mesh.n_cells, "cell index");
             }
             if (fabs(sum - 1) > worst_sum) worst_sum = fabs(sum - 1);
             if (off[i + 1] - off[i] > max_cells) max_cells = off[i + 1] - off[i];
@@ -343,7 +373,7 @@ static void test_conservation_all_methods(void)
         CHECK(min_w >= 0, "%s: negative weight %g", cases[m].method, min_w);
         CHECK(cdc_alpha_p(k, &p, alpha) == CDC_OK, "alpha");
         double vsum = 0;
-        for (int c = 0; c < b.mesh.n_cells; ++c) vsum += alpha[c] * b.mesh.cell_volumes[c];
+        for (int c = 0; c < t.b.mesh.n_cells; ++c) vsum += alpha[c] * t.b.mesh.cell_volumes[c];
         const double rel = fabs(vsum - vtot) / vtot;
         CHECK(rel <= 1e-12, "%s (n=%g mirror=%d): conservation error %.2e", cases[m].method,
               cases[m].prm.expansion_factor, cases[m].prm.wall_mirror, rel);
@@ -352,25 +382,24 @@ static void test_conservation_all_methods(void)
         cdc_kernels_destroy(k);
     }
     free(alpha);
-    cdc_context_destroy(ctx);
-    box_mesh_destroy(&b);
+    cube_case_close(&t);
 }
 
 /* Momentum: force spread to cells and gathered back are adjoint; total force is conserved. */
 static void test_spread_gather_adjoint(void)
 {
-    const double dx = 0.01, lo[3] = {0, 0, 0}, hi[3] = {12 * dx, 12 * dx, 12 * dx};
-    box_mesh b;
-    box_mesh_create(&b, 12, 12, 12, lo, hi, ALL_WALLS, 0.0);
-    cdc_context *ctx = NULL;
-    cdc_context_create(&b.mesh, &ctx);
+    cube_case t;
+    if (cube_case_open(&t, 12, 12, 12)) return;
+    const double dx = CUBE_DX;
+    const double *hi = t.hi;
+    cdc_context *ctx = t.ctx;
     enum { NP = 80 };
     static double x[3 * NP], r[NP], f[3 * NP], u[3 * NP];
     unsigned long long s = 5;
     const int n = make_particles(&s, hi, dx, x, r, NP);
     for (int i = 0; i < 3 * n; ++i) f[i] = rnd(&s) - 0.5;
     cdc_particles p = {n, x, r, NULL, NULL};
-    const size_t nc = (size_t)b.mesh.n_cells;
+    const size_t nc = (size_t)t.b.mesh.n_cells;
     double *F = malloc(3 * nc * sizeof(double)), *U = malloc(3 * nc * sizeof(double));
     for (size_t c = 0; c < 3 * nc; ++c) U[c] = rnd(&s);
     cdc_kernel_params prm = {0};
@@ -383,20 +412,19 @@ static void test_spread_gather_adjoint(void)
     for (int d = 0; d < 3; ++d) {
         double tp = 0, tc = 0, scale = 0;
         for (int i = 0; i < n; ++i) { tp += f[3 * i + d]; scale += fabs(f[3 * i + d]); }
-        for (size_t c = 0; c < nc; ++c) tc += F[3 * c + d] * b.mesh.cell_volumes[c];
+        for (size_t c = 0; c < nc; ++c) tc += F[3 * c + d] * t.b.mesh.cell_volumes[c];
         CHECK(fabs(tp - tc) <= 1e-13 * scale, "force component %d: particles %.17g cells %.17g", d, tp, tc);
     }
     /* <spread f, U> over cells (with volumes) == <f, gather U> over particles: power is consistent */
     double a = 0, bb = 0;
     for (size_t c = 0; c < nc; ++c)
-        for (int d = 0; d < 3; ++d) a += F[3 * c + d] * b.mesh.cell_volumes[c] * U[3 * c + d];
+        for (int d = 0; d < 3; ++d) a += F[3 * c + d] * t.b.mesh.cell_volumes[c] * U[3 * c + d];
     for (int i = 0; i < 3 * n; ++i) bb += f[i] * u[i];
     CHECK(fabs(a - bb) <= 1e-12 * fabs(a), "adjoint: %.17g vs %.17g", a, bb);
     cdc_kernels_destroy(k);
     free(F);
     free(U);
-    cdc_context_destroy(ctx);
-    box_mesh_destroy(&b);
+    cube_case_close(&t);
 }
 
 /* L1 distance between two kernel sets' weight vectors, per particle: mean and max. */
@@ -425,11 +453,10 @@ static void kernel_l1(const cdc_kernels *a, const cdc_kernels *b, int n, int nce
  * average; and divided is at least twice as close to exact as the centroid method. */
 static void test_divided_vs_exact(void)
 {
-    const double dx = 0.01, lo[3] = {0, 0, 0}, hi[3] = {16 * dx, 16 * dx, 16 * dx};
-    box_mesh b;
-    box_mesh_create(&b, 16, 16, 16, lo, hi, ALL_WALLS, 0.0);
-    cdc_context *ctx = NULL;
-    cdc_context_create(&b.mesh, &ctx);
+    cube_case t;
+    if (cube_case_open(&t, 16, 16, 16)) return;
+    const double dx = CUBE_DX;
+    cdc_context *ctx = t.ctx;
     enum { NP = 400 };
     static double x[3 * NP], r[NP];
     unsigned long long s = 11;
@@ -446,8 +473,8 @@ static void test_divided_vs_exact(void)
     cdc_kernels_build(ke, &p);
     cdc_kernels_build(kc, &p);
     double mean, worst, cmean, cworst;
-    kernel_l1(kd, ke, NP, b.mesh.n_cells, &mean, &worst);
-    kernel_l1(kc, ke, NP, b.mesh.n_cells, &cmean, &cworst);
+    kernel_l1(kd, ke, NP, t.b.mesh.n_cells, &mean, &worst);
+    kernel_l1(kc, ke, NP, t.b.mesh.n_cells, &cmean, &cworst);
     printf("    L1 distance to exact: divided mean %.4f max %.4f; centre mean %.4f max %.4f\n", mean, worst,
            cmean, cworst);
     CHECK(mean <= 0.25 && worst <= 0.6, "divided vs exact: mean %.4f max %.4f", mean, worst);
@@ -455,17 +482,15 @@ static void test_divided_vs_exact(void)
     cdc_kernels_destroy(kd);
     cdc_kernels_destroy(ke);
     cdc_kernels_destroy(kc);
-    cdc_context_destroy(ctx);
-    box_mesh_destroy(&b);
+    cube_case_close(&t);
 }
 
 static void test_gaussian_symmetric(void)
 {
-    const double dx = 0.01, lo[3] = {0, 0, 0}, hi[3] = {21 * dx, 21 * dx, 21 * dx};
-    box_mesh b;
-    box_mesh_create(&b, 21, 21, 21, lo, hi, ALL_WALLS, 0.0);
-    cdc_context *ctx = NULL;
-    cdc_context_create(&b.mesh, &ctx);
+    cube_case t;
+    if (cube_case_open(&t, 21, 21, 21)) return;
+    const double dx = CUBE_DX;
+    cdc_context *ctx = t.ctx;
     double x[3] = {10.5 * dx, 10.5 * dx, 10.5 * dx}, r = 0.5 * dx;
     cdc_particles p = {1, x, &r, NULL, NULL};
     cdc_kernel_params prm = {0};
@@ -473,28 +498,27 @@ static void test_gaussian_symmetric(void)
     cdc_kernels *k;
     cdc_kernels_create(ctx, "gaussian", &prm, &k);
     cdc_kernels_build(k, &p);
-    double *w = calloc(b.mesh.n_cells, sizeof(double));
+    double *w = calloc(t.b.mesh.n_cells, sizeof(double));
     const int32_t *off = cdc_kernels_offsets(k), *cells = cdc_kernels_cells(k);
     for (int e = off[0]; e < off[1]; ++e) w[cells[e]] = cdc_kernels_weights(k)[e];
     double worst = 0;
     for (int kk = 0; kk < 21; ++kk)
         for (int j = 0; j < 21; ++j)
             for (int i = 0; i < 21; ++i) {
-                const double a = w[box_mesh_cell(&b, i, j, kk)];
-                const double mirrors[5] = {w[box_mesh_cell(&b, 20 - i, j, kk)], w[box_mesh_cell(&b, i, 20 - j, kk)],
-                                           w[box_mesh_cell(&b, i, j, 20 - kk)], w[box_mesh_cell(&b, j, i, kk)],
-                                           w[box_mesh_cell(&b, kk, j, i)]};
+                const double a = w[box_mesh_cell(&t.b, i, j, kk)];
+                const double mirrors[5] = {w[box_mesh_cell(&t.b, 20 - i, j, kk)], w[box_mesh_cell(&t.b, i, 20 - j, kk)],
+                                           w[box_mesh_cell(&t.b, i, j, 20 - kk)], w[box_mesh_cell(&t.b, j, i, kk)],
+                                           w[box_mesh_cell(&t.b, kk, j, i)]};
                 for (int q = 0; q < 5; ++q) worst = fmax(worst, fabs(a - mirrors[q]));
             }
     CHECK(worst <= 1e-15, "gaussian asymmetry %.2e", worst);
     /* weights decrease with distance */
-    CHECK(w[box_mesh_cell(&b, 10, 10, 10)] > w[box_mesh_cell(&b, 11, 10, 10)] &&
-              w[box_mesh_cell(&b, 11, 10, 10)] > w[box_mesh_cell(&b, 12, 10, 10)],
+    CHECK(w[box_mesh_cell(&t.b, 10, 10, 10)] > w[box_mesh_cell(&t.b, 11, 10, 10)] &&
+              w[box_mesh_cell(&t.b, 11, 10, 10)] > w[box_mesh_cell(&t.b, 12, 10, 10)],
           "gaussian not decreasing");
     free(w);
     cdc_kernels_destroy(k);
-    cdc_context_destroy(ctx);
-    box_mesh_destroy(&b);
+    cube_case_close(&t);
 }
 
 /* ------------------------------------------------------------------ wall-aware kernels */
@@ -567,15 +591,14 @@ static void test_wall_mirror_flat(void)
 
 static void test_diffusion(void)
 {
-    const double dx = 0.01, lo[3] = {0, 0, 0}, hi[3] = {41 * dx, 41 * dx, 3 * dx};
-    box_mesh b;
-    box_mesh_create(&b, 41, 41, 3, lo, hi, ALL_WALLS, 0.0);
-    cdc_context *ctx = NULL;
-    cdc_context_create(&b.mesh, &ctx);
-    const size_t nc = (size_t)b.mesh.n_cells;
+    cube_case t;
+    if (cube_case_open(&t, 41, 41, 3)) return;
+    const double dx = CUBE_DX;
+    cdc_context *ctx = t.ctx;
+    const size_t nc = (size_t)t.b.mesh.n_cells;
     double *phi = calloc(nc, sizeof(double));
-    const double V = b.mesh.cell_volumes[0];
-    for (int kk = 0; kk < 3; ++kk) phi[box_mesh_cell(&b, 20, 20, kk)] = 1.0 / V / 3;
+    const double V = t.b.mesh.cell_volumes[0];
+    for (int kk = 0; kk < 3; ++kk) phi[box_mesh_cell(&t.b, 20, 20, kk)] = 1.0 / V / 3;
     cdc_diffusion_params prm = {0};
     /* b = 2 dx: implicit Euler's kernel has exponential tails, keep them off the walls */
     prm.bandwidth = 2 * dx;
@@ -585,10 +608,10 @@ static void test_diffusion(void)
     for (int kk = 0; kk < 3; ++kk)
         for (int j = 0; j < 41; ++j)
             for (int i = 0; i < 41; ++i) {
-                const double v = phi[box_mesh_cell(&b, i, j, kk)] * V, xx = (i - 20) * dx;
+                const double v = phi[box_mesh_cell(&t.b, i, j, kk)] * V, xx = (i - 20) * dx;
                 m0 += v;
                 m2 += v * xx * xx;
-                mn = fmin(mn, phi[box_mesh_cell(&b, i, j, kk)]);
+                mn = fmin(mn, phi[box_mesh_cell(&t.b, i, j, kk)]);
             }
     CHECK(fabs(m0 - 1) <= 1e-13, "diffusion conservation %.2e", fabs(m0 - 1));
     /* variance per axis grows as 2 T = b^2 / 2 (exact for implicit Euler on a uniform grid) */
@@ -598,23 +621,22 @@ static void test_diffusion(void)
     /* random field: conservation to round-off with a loose solver tolerance */
     unsigned long long s = 3;
     double before = 0, after = 0;
-    for (size_t c = 0; c < nc; ++c) { phi[c] = rnd(&s); before += phi[c] * b.mesh.cell_volumes[c]; }
+    for (size_t c = 0; c < nc; ++c) { phi[c] = rnd(&s); before += phi[c] * t.b.mesh.cell_volumes[c]; }
     prm.tolerance = 1e-3;
     CHECK(cdc_diffuse(ctx, &prm, phi) == CDC_OK, "diffuse loose");
-    for (size_t c = 0; c < nc; ++c) after += phi[c] * b.mesh.cell_volumes[c];
+    for (size_t c = 0; c < nc; ++c) after += phi[c] * t.b.mesh.cell_volumes[c];
     CHECK(fabs(after - before) <= 1e-13 * before, "loose-tolerance conservation %.2e", fabs(after - before) / before);
     free(phi);
-    cdc_context_destroy(ctx);
-    box_mesh_destroy(&b);
+    cube_case_close(&t);
 }
 
 static void test_size_aware_diffusion(void)
 {
-    const double dx = 0.01, lo[3] = {0, 0, 0}, hi[3] = {30 * dx, 30 * dx, 4 * dx};
-    box_mesh b;
-    box_mesh_create(&b, 30, 30, 4, lo, hi, ALL_WALLS, 0.0);
-    cdc_context *ctx = NULL;
-    cdc_context_create(&b.mesh, &ctx);
+    cube_case t;
+    if (cube_case_open(&t, 30, 30, 4)) return;
+    const double dx = CUBE_DX;
+    const double *hi = t.hi;
+    cdc_context *ctx = t.ctx;
     enum { NP = 200 };
     static double x[3 * NP], r[NP];
     unsigned long long s = 17;
@@ -626,7 +648,7 @@ static void test_size_aware_diffusion(void)
     cdc_kernels *k;
     cdc_kernels_create(ctx, "centre", NULL, &k);
     cdc_kernels_build(k, &p);
-    const size_t nc = (size_t)b.mesh.n_cells;
+    const size_t nc = (size_t)t.b.mesh.n_cells;
     double *a = malloc(nc * sizeof(double)), *ref = malloc(nc * sizeof(double));
     cdc_diffusion_params base = {0};
     base.n_steps = 2;
@@ -635,7 +657,7 @@ static void test_size_aware_diffusion(void)
     CHECK(ncls == 2, "binary bed gave %d classes", ncls);
     double vt = 0, va = 0;
     for (int i = 0; i < NP; ++i) vt += 4.0 / 3.0 * PI * pow(r[i], 3);
-    for (size_t c = 0; c < nc; ++c) va += a[c] * b.mesh.cell_volumes[c];
+    for (size_t c = 0; c < nc; ++c) va += a[c] * t.b.mesh.cell_volumes[c];
     CHECK(fabs(va - vt) <= 1e-12 * vt, "size-aware conservation %.2e", fabs(va - vt) / vt);
     /* monodisperse: identical to plain diffusion with b = 6 d */
     for (int i = 0; i < NP; ++i) r[i] = 0.5 * dx;
@@ -650,28 +672,25 @@ static void test_size_aware_diffusion(void)
     free(a);
     free(ref);
     cdc_kernels_destroy(k);
-    cdc_context_destroy(ctx);
-    box_mesh_destroy(&b);
+    cube_case_close(&t);
 }
 
 static void test_limiter(void)
 {
-    const double dx = 0.01, lo[3] = {0, 0, 0}, hi[3] = {10 * dx, 10 * dx, 10 * dx};
-    box_mesh b;
-    box_mesh_create(&b, 10, 10, 10, lo, hi, ALL_WALLS, 0.0);
-    cdc_context *ctx = NULL;
-    cdc_context_create(&b.mesh, &ctx);
-    const size_t nc = (size_t)b.mesh.n_cells;
+    cube_case t;
+    if (cube_case_open(&t, 10, 10, 10)) return;
+    cdc_context *ctx = t.ctx;
+    const size_t nc = (size_t)t.b.mesh.n_cells;
     double *a = calloc(nc, sizeof(double));
     /* an over-packed block in a corner, up to 1.3 */
     for (int kk = 0; kk < 3; ++kk)
         for (int j = 0; j < 3; ++j)
-            for (int i = 0; i < 3; ++i) a[box_mesh_cell(&b, i, j, kk)] = 0.9 + 0.4 * ((i + j + kk) % 2);
+            for (int i = 0; i < 3; ++i) a[box_mesh_cell(&t.b, i, j, kk)] = 0.9 + 0.4 * ((i + j + kk) % 2);
     double before = 0, after = 0, moved = 0, mx = 0;
-    for (size_t c = 0; c < nc; ++c) before += a[c] * b.mesh.cell_volumes[c];
+    for (size_t c = 0; c < nc; ++c) before += a[c] * t.b.mesh.cell_volumes[c];
     int32_t nlim = 0;
     CHECK(cdc_limit_packing(ctx, 0.64, 200, a, &moved, &nlim) == CDC_OK, "%s", cdc_last_error(ctx));
-    for (size_t c = 0; c < nc; ++c) { after += a[c] * b.mesh.cell_volumes[c]; mx = fmax(mx, a[c]); }
+    for (size_t c = 0; c < nc; ++c) { after += a[c] * t.b.mesh.cell_volumes[c]; mx = fmax(mx, a[c]); }
     CHECK(fabs(after - before) <= 1e-13 * before, "limiter conservation %.2e", fabs(after - before) / before);
     CHECK(mx <= 0.64 * (1 + 1e-12), "max after limiting %.15g", mx);
     CHECK(nlim == 27 && moved > 0, "limited %d cells, moved %g", (int)nlim, moved);
@@ -680,8 +699,7 @@ static void test_limiter(void)
     for (int q = 0; q < 27; ++q) excess += ((q % 2 ? 1.3 : 0.9) - 0.64);
     (void)excess;
     free(a);
-    cdc_context_destroy(ctx);
-    box_mesh_destroy(&b);
+    cube_case_close(&t);
 }
 
 
