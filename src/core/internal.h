@@ -38,7 +38,8 @@ void cdc_dvec_free(cdc_dvec *a);
 
 /* A wall plane near a particle: points x with dot(x - origin, normal) = 0; normal points out. */
 typedef struct { double origin[3]; double normal[3]; } cdc_plane;
-#define CDC_MAX_PLANES 3
+#define CDC_MAX_PLANES 6   /* the walls of a box; more distinct planes in reach is an error */
+#define CDC_MAX_IMAGES 64  /* mirror images of one particle (a box corner in a thin slab has ~8) */
 #define CDC_N_SCRATCH 7
 /* Relative slack on "within radius" tests: on regular lattices cell centres sit exactly on a
  * kernel's radius, and round-off must not decide (asymmetrically) whether they are in. */
@@ -128,7 +129,8 @@ const cdc_method *cdc_find_method(const char *name);
 /* Cells whose centre lies within `radius` of x, found by flood fill from the start cell across
  * faces. The start cell is included too (the host of a particle), unless seed_only (a ghost's
  * start cell, included only if it qualifies). When planes != NULL, wall faces of visited cells
- * closer than `radius` to x are collected as mirror planes (deduplicated, at most CDC_MAX_PLANES). */
+ * closer than `radius` to x are collected as mirror planes (deduplicated); more than CDC_MAX_PLANES
+ * distinct planes (curved or stepped walls) is CDC_ERR_UNSUPPORTED. */
 cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t start, int seed_only, double radius,
                             cdc_ivec *cells, cdc_plane *planes, int *n_planes);
 
@@ -140,8 +142,12 @@ cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t st
  * searches for a ghost particle start. */
 cdc_status cdc_nearest_cell(cdc_context *ctx, const double x[3], double reach, int32_t *cell);
 
-/* Images of x across the planes (x itself first, then single, double, triple reflections). */
-int cdc_mirror_images(const double x[3], const cdc_plane *planes, int n_planes, double images[][3]);
+/* Images of x across the wall planes (method of images), x itself first: every point reached by
+ * reflecting x or an image across a plane, kept while it lies less than `reach` beyond every plane
+ * (farther images cannot touch a cell inside). Independent of the planes' order, so a symmetric
+ * particle set gives a symmetric field. Returns the count, or -1 above CDC_MAX_IMAGES. */
+int cdc_mirror_images(const double x[3], const cdc_plane *planes, int n_planes, double reach,
+                      double images[][3]);
 
 static inline double cdc_dist2(const double a[3], const double b[3])
 {

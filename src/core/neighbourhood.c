@@ -26,28 +26,30 @@ static inline int accepts(const cdc_context *ctx, enum accept_kind kind, int32_t
     return d2 < radius * radius;
 }
 
-/* Add the plane of wall face f if it is within `radius` of x and not yet known. */
-static void collect_plane(const cdc_mesh *m, int32_t f, const double x[3], double radius,
-                          cdc_plane *planes, int *n_planes)
+/* Add the plane of wall face f if it is within `radius` of x and not yet known; -1 if it would be
+ * one more than CDC_MAX_PLANES. */
+static int collect_plane(const cdc_mesh *m, int32_t f, const double x[3], double radius, cdc_plane *planes,
+                         int *n_planes)
 {
     const double *S = m->face_areas + 3 * (size_t)f, *C = m->face_centres + 3 * (size_t)f;
     const double mag = sqrt(S[0] * S[0] + S[1] * S[1] + S[2] * S[2]);
     const double n[3] = {S[0] / mag, S[1] / mag, S[2] / mag};
     const double dist = (C[0] - x[0]) * n[0] + (C[1] - x[1]) * n[1] + (C[2] - x[2]) * n[2];
-    if (dist >= radius) return;
+    if (dist >= radius) return 0;
     for (int k = 0; k < *n_planes; ++k) {
         const cdc_plane *q = planes + k;
         const double dn = n[0] * q->normal[0] + n[1] * q->normal[1] + n[2] * q->normal[2];
         const double off = (C[0] - q->origin[0]) * q->normal[0] + (C[1] - q->origin[1]) * q->normal[1] +
                            (C[2] - q->origin[2]) * q->normal[2];
-        if (dn > 1.0 - 1e-9 && fabs(off) <= 1e-9 * radius) return; /* same plane */
+        if (dn > 1.0 - 1e-9 && fabs(off) <= 1e-9 * radius) return 0; /* same plane */
     }
-    if (*n_planes >= CDC_MAX_PLANES) return;
+    if (*n_planes >= CDC_MAX_PLANES) return -1;
     cdc_plane *p = planes + (*n_planes)++;
     for (int d = 0; d < 3; ++d) {
         p->origin[d] = C[d];
         p->normal[d] = n[d];
     }
+    return 0;
 }
 
 /* Breadth-first over the face neighbours: the cells accepted form the neighbourhood; the search
@@ -72,8 +74,12 @@ static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, int s
             for (int32_t q = ctx->cell_face_offsets[c]; q < ctx->cell_face_offsets[c + 1]; ++q) {
                 const int32_t f = ctx->cell_faces[q];
                 if (f >= m->n_internal_faces &&
-                    m->boundary_face_kind[f - m->n_internal_faces] == CDC_FACE_WALL)
-                    collect_plane(m, f, x, radius, planes, n_planes);
+                    m->boundary_face_kind[f - m->n_internal_faces] == CDC_FACE_WALL &&
+                    collect_plane(m, f, x, radius, planes, n_planes))
+                    return cdc_fail(ctx, CDC_ERR_UNSUPPORTED,
+                                    "wallMirror: more than %d distinct wall planes within %g m of (%g %g %g); "
+                                    "mirroring handles planar walls of box-like domains only",
+                                    CDC_MAX_PLANES, radius, x[0], x[1], x[2]);
             }
         for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
             const int32_t nb = ctx->cell_cells[q];
@@ -105,25 +111,30 @@ static void reflect(const double x[3], const cdc_plane *p, double out[3])
     for (int d = 0; d < 3; ++d) out[d] = x[d] - 2.0 * s * p->normal[d];
 }
 
-int cdc_mirror_images(const double x[3], const cdc_plane *planes, int n_planes, double images[][3])
+int cdc_mirror_images(const double x[3], const cdc_plane *planes, int n_planes, double reach,
+                      double images[][3])
 {
-    /* Every subset of the planes, reflected in order: for perpendicular walls (corners of box
-     * meshes) this is the exact method of images of a reflecting boundary. */
-    int n = 0;
-    for (int mask = 0; mask < (1 << n_planes); ++mask) {
-        double y[3] = {x[0], x[1], x[2]};
-        for (int k = 0; k < n_planes; ++k)
-            if (mask & (1 << k)) {
-                double z[3];
-                reflect(y, planes + k, z);
-                y[0] = z[0];
-                y[1] = z[1];
-                y[2] = z[2];
+    const double same2 = (1e-9 * reach) * (1e-9 * reach);
+    int n = 1;
+    for (int d = 0; d < 3; ++d) images[0][d] = x[d];
+    for (int head = 0; head < n; ++head)
+        for (int k = 0; k < n_planes; ++k) {
+            double y[3];
+            reflect(images[head], planes + k, y);
+            double beyond = 0.0; /* how far y lies outside the domain side of the planes */
+            for (int q = 0; q < n_planes; ++q) {
+                const cdc_plane *pl = planes + q;
+                const double s = (y[0] - pl->origin[0]) * pl->normal[0] + (y[1] - pl->origin[1]) * pl->normal[1] +
+                                 (y[2] - pl->origin[2]) * pl->normal[2];
+                if (s > beyond) beyond = s;
             }
-        images[n][0] = y[0];
-        images[n][1] = y[1];
-        images[n][2] = y[2];
-        ++n;
-    }
+            if (beyond >= reach) continue;
+            int known = 0;
+            for (int m = 0; m < n && !known; ++m) known = cdc_dist2(y, images[m]) <= same2;
+            if (known) continue;
+            if (n == CDC_MAX_IMAGES) return -1;
+            for (int d = 0; d < 3; ++d) images[n][d] = y[d];
+            ++n;
+        }
     return n;
 }

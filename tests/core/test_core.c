@@ -573,6 +573,66 @@ static void wall_layer(const char *method, double n_or_b, int mirror, double *ne
     box_mesh_destroy(&b);
 }
 
+/* A particle set symmetric about the mid-plane y = H/2 of a thin box (the Mueller bed's shape: 8
+ * cells thick, walls all round) gives a symmetric alpha_p with every method, mirrored or not, and
+ * after diffusion: no method may prefer a side (a time-averaged profile would inherit it). */
+static void test_mirror_symmetry(void)
+{
+    enum { NX = 8, NY = 36, NZ = 20, NHALF = 150 };
+    cube_case t;
+    if (cube_case_open(&t, NX, NY, NZ)) return;
+    const double dx = CUBE_DX, *hi = t.hi;
+    static double x[3 * 2 * NHALF], r[2 * NHALF];
+    unsigned long long s = 77;
+    for (int n = 0; n < NHALF; ++n) {
+        r[n] = r[n + NHALF] = 0.5 * dx;
+        for (int d = 0; d < 3; ++d) x[3 * n + d] = r[n] + (hi[d] - 2 * r[n]) * rnd(&s);
+        x[3 * (n + NHALF)] = x[3 * n];
+        x[3 * (n + NHALF) + 1] = hi[1] - x[3 * n + 1];
+        x[3 * (n + NHALF) + 2] = x[3 * n + 2];
+    }
+    cdc_particles p = {2 * NHALF, x, r, NULL, NULL};
+    struct { const char *method; double n, b; int mirror; } cases[] = {
+        {"centre", 0, 0, 0},      {"divided", 0, 0, 0},       {"bigParticle", 0, 0, 0},
+        {"bigParticle", 5, 0, 0}, {"bigParticle", 5, 0, 1},   {"twoGrid", 0, 0, 0},
+        {"twoGrid", 0, 0, 1},     {"gaussian", 0, 3 * dx, 0}, {"gaussian", 0, 3 * dx, 1},
+    };
+    const int nc = t.b.mesh.n_cells;
+    double *alpha = malloc(nc * sizeof(double));
+    for (size_t m = 0; m < sizeof cases / sizeof cases[0]; ++m) {
+        cdc_kernel_params prm = {0};
+        prm.expansion_factor = cases[m].n;
+        prm.bandwidth = cases[m].b;
+        prm.wall_mirror = cases[m].mirror;
+        cdc_kernels *k = NULL;
+        CHECK(cdc_kernels_create(t.ctx, cases[m].method, &prm, &k) == CDC_OK, "%s: %s", cases[m].method,
+              cdc_last_error(t.ctx));
+        if (!k) continue;
+        CHECK(cdc_kernels_build(k, &p) == CDC_OK && cdc_alpha_p(k, &p, alpha) == CDC_OK, "%s: %s",
+              cases[m].method, cdc_last_error(t.ctx));
+        for (int pass = 0; pass < 2; ++pass) {
+            if (pass == 1) { /* diffusion smoothing on top, b = 6 d */
+                cdc_diffusion_params dp = {0};
+                dp.bandwidth = 6 * dx;
+                CHECK(cdc_diffuse(t.ctx, &dp, alpha) == CDC_OK, "diffuse: %s", cdc_last_error(t.ctx));
+            }
+            double worst = 0, top = 0;
+            for (int kk = 0; kk < NZ; ++kk)
+                for (int j = 0; j < NY; ++j)
+                    for (int i = 0; i < NX; ++i) {
+                        const double a = alpha[box_mesh_cell(&t.b, i, j, kk)];
+                        worst = fmax(worst, fabs(a - alpha[box_mesh_cell(&t.b, i, NY - 1 - j, kk)]));
+                        top = fmax(top, a);
+                    }
+            CHECK(worst <= 1e-12 * top, "%s (n=%g b=%g mirror=%d%s): alpha_p not symmetric, worst %.2e of max %.3f",
+                  cases[m].method, cases[m].n, cases[m].b, cases[m].mirror, pass ? ", diffused" : "", worst, top);
+        }
+        cdc_kernels_destroy(k);
+    }
+    free(alpha);
+    cube_case_close(&t);
+}
+
 static void test_wall_mirror_flat(void)
 {
     double ratio_plain, ratio_mirror;
@@ -936,6 +996,7 @@ int main(void)
     run("spread_gather_adjoint", test_spread_gather_adjoint);
     run("divided_vs_exact", test_divided_vs_exact);
     run("gaussian_symmetric", test_gaussian_symmetric);
+    run("mirror_symmetry", test_mirror_symmetry);
     run("wall_mirror_flat", test_wall_mirror_flat);
     run("diffusion", test_diffusion);
     run("size_aware_diffusion", test_size_aware_diffusion);

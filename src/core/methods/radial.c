@@ -21,8 +21,12 @@ cdc_status cdc_radial_kernel(cdc_context *ctx, const cdc_particle_in *p, double 
                                      wall_mirror ? planes : NULL, &n_planes);
     if (st != CDC_OK) return st;
 
-    double images[1 << CDC_MAX_PLANES][3];
-    const int n_images = cdc_mirror_images(p->x, planes, n_planes, images);
+    double images[CDC_MAX_IMAGES][3];
+    const int n_images = cdc_mirror_images(p->x, planes, n_planes, radius, images);
+    if (n_images < 0)
+        return cdc_fail(ctx, CDC_ERR_UNSUPPORTED,
+                        "wallMirror: more than %d mirror images of the particle at (%g %g %g) within %g m "
+                        "(a domain thinner than the kernel)", CDC_MAX_IMAGES, p->x[0], p->x[1], p->x[2], radius);
     const cdc_mesh *m = ctx->mesh;
     int added = 0;
     for (size_t q = 0; q < ctx->near_cells.n; ++q) {
