@@ -33,6 +33,21 @@ check() {
     fi
 }
 
+# check_runs NAME 'sed expression': a valid edit; the case must run to its end (exit 0)
+check_runs() {
+    local name="$1" edit="$2" c="$work/$1"
+    cp -r "$base" "$c"
+    sed -i "$edit" "$c/constant/couplingProperties"
+    (cd "$c" && timeout 120 coarseDemFoam > log 2>&1)
+    local rc=$?
+    if [ $rc -eq 0 ] && grep -q "^End" "$c/log"; then
+        echo "PASS: valid setting '$name' runs to the end"; pass=$((pass+1))
+    else
+        echo "FAIL: valid setting '$name' (exit $rc) did not run to the end"; tail -4 "$c/log" | sed 's/^/    /'
+        fail=$((fail+1))
+    fi
+}
+
 check unknown_model 's/^voidFractionModel .*/voidFractionModel centroid;/' \
     "unknown void fraction method 'centroid'; valid methods are: centre, divided, bigParticle, twoGrid, gaussian, exact"
 check unknown_model_file 's/^voidFractionModel .*/voidFractionModel centroid;/' "constant/couplingProperties"
@@ -52,6 +67,9 @@ check couplingInterval_neg 's/^couplingInterval .*/couplingInterval -5;/' "must 
 check modelType_C 's/^modelType .*/modelType C;/' "valid model types: A"
 check difelice_reynolds 's/GidaspowDrag/DiFeliceDrag/; $a DiFeliceDragProps { reynoldsNumber interstitial; }' \
     "entry reynoldsNumber interstitial in"
+check modelA_without_gradP 's/GidaspowDrag gradPForce/GidaspowDrag/' "lacks gradPForce, which modelType A needs"
+# virtual mass needs the fluid acceleration from the very first coupling (before the time loop)
+check_runs virtual_mass_first_step 's/GidaspowDrag gradPForce/GidaspowDrag gradPForce virtualMassForce/'
 check gradP_and_Archimedes 's/GidaspowDrag gradPForce/GidaspowDrag gradPForce Archimedes/' "counted twice"
 check dem_script_missing 's|^demScript .*|demScript "DEM/nothere.liggghts";|' "DEM/nothere.liggghts\" not found"
 check dem_no_fix '' "defines no fix 'cfd' of style couple/coarse" "sed -i '/couple\/coarse/d' DEM/in.liggghts"

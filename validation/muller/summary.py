@@ -4,23 +4,42 @@
     summary.py <out dir> <run dir> [<run dir> ...]
 
 For each run (tutorials/fluidizedBedMuller/runs/<model>_dx<..>_U<..>_<mode>): the RMS errors from
-results/comparison/errors.csv (compare.py), the wall time (sum of wall_seconds.txt, one line per
-start or restart) and the coupling share of it from the solver's last stage-timer line (locate,
-kernel, smoothing incl. the packing limiter, forces, exchange over all stages). Copies each run's
+results/comparison/errors.csv (compare.py), the wall time (per start of the solver, from its log or
+wall_seconds.txt, summed over restarts) and the coupling share of it from the solver's stage timers
+(locate, kernel, smoothing incl. the packing limiter, forces, exchange over all stages; each
+start's last line, summed). Copies each run's
 profile CSVs and comparison plots to <out>/<run>_<commit>/ (runs of one model at different commits
 side by side) and writes <out>/error_vs_runtime.{csv,md,png}. Where a run also has the binned
 particle velocity (profile_vzbinned, binnedParticleFields on), its error is a further column.
 """
 import glob, os, re, shutil, sys
 
-def stage_times(log):
-    last = None
+def log_segments(log):
+    """Per start of the solver (a log continued after a restart holds several, each beginning with
+    OpenFOAM's "Create time"): its last stage-timer line (the timers count from each start) and its
+    last ClockTime (wall seconds since that start). Segments cut by a kill are counted up to their
+    last step, which wall_seconds.txt (written when the solver returns) would miss."""
+    segs = []
     for line in open(log, errors="replace"):
-        if line.startswith("Stage timers"):
-            last = line
-    if not last:
-        return None
-    return {m.group(1): float(m.group(2)) for m in re.finditer(r"(\w+) ([0-9.eE+-]+) \(", last)}
+        if line.startswith("Create time"):
+            segs.append({"stages": None, "clock": 0.0})
+        elif not segs:
+            continue
+        elif line.startswith("Stage timers"):
+            segs[-1]["stages"] = {m.group(1): float(m.group(2)) for m in re.finditer(r"(\w+) ([0-9.eE+-]+) \(", line)}
+        else:
+            m = re.search(r"ClockTime = ([0-9.eE+-]+)", line)
+            if m:
+                segs[-1]["clock"] = float(m.group(1))
+    return segs
+
+def stage_times(segs):
+    """Stage seconds summed over the segments (None without any stage-timer line)."""
+    total = {}
+    for seg in segs:
+        for k, v in (seg["stages"] or {}).items():
+            total[k] = total.get(k, 0.0) + v
+    return total or None
 
 def main():
     if len(sys.argv) < 3:
@@ -39,15 +58,22 @@ def main():
             if line:
                 q, z, rms, mx, sem, n = line.split(",")
                 errs[(q, z)] = (float(rms), float(mx), float(sem))
-        # wall_seconds.txt: one line per (re)start, "<wall seconds> [<MPI ranks>]"
-        starts = [l.split() for l in open(os.path.join(run, "wall_seconds.txt")) if l.strip()]
-        wall = sum(float(t[0]) for t in starts)
-        core = sum(float(t[0]) * (int(t[1]) if len(t) > 1 else 1) for t in starts)
-        ranks = "/".join(sorted(set(t[1] if len(t) > 1 else "1" for t in starts)))
+        # wall_seconds.txt: one line per (re)start that returned, "<wall seconds> [<MPI ranks>]";
+        # the solver log has every start, also one cut by a kill: the larger sum is the wall time
+        wpath = os.path.join(run, "wall_seconds.txt")
+        starts = [l.split() for l in open(wpath) if l.strip()] if os.path.exists(wpath) else []
+        logs = [p for p in (os.path.join(run, "log.coarseDemFoam"), os.path.join(run, "log.DPMFoam")) if os.path.exists(p)]
+        segs = log_segments(logs[0]) if logs else []
+        wall = max(sum(float(t[0]) for t in starts), sum(seg["clock"] for seg in segs))
+        rank_set = sorted(set(int(t[1]) if len(t) > 1 else 1 for t in starts)) or [1]
+        ranks = "/".join(str(r) for r in rank_set)
+        if len(rank_set) == 1:
+            core = wall * rank_set[0]
+        else:   # mixed rank counts: per start as recorded
+            core = sum(float(t[0]) * (int(t[1]) if len(t) > 1 else 1) for t in starts)
         cpath = os.path.join(run, "commit.txt")
         commit = " ".join(sorted(set(l.strip() for l in open(cpath) if l.strip()))) if os.path.exists(cpath) else "unknown"
-        log = os.path.join(run, "log.coarseDemFoam")
-        st = (stage_times(log) if os.path.exists(log) else None) or {}
+        st = stage_times(segs) or {}
         total = sum(st.values()) or float("nan")
         coupling = sum(st.get(k, 0) for k in ("locate", "kernel", "smoothing", "forces", "exchange"))
         info = open(os.path.join(run, "results", "profiles_info.txt")).readline().strip()

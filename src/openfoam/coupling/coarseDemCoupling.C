@@ -101,6 +101,15 @@ coarseDemCoupling::coarseDemCoupling
     {
         WarningInFunction << "no drag model in forceModels of " << dict_.name() << endl;
     }
+    if (!modelB_ && names.size() && !hasGradP)
+    {
+        // Model A's fluid carries -alpha grad(p) (Zhang et al. 2023 eq. 15): the particles must get
+        // -V grad(p), or the dynamic pressure force leaves the fluid and reaches no particle.
+        FatalIOErrorInFunction(dict_)
+            << "forceModels in " << dict_.name() << " lacks gradPForce, which modelType A needs: the"
+            << " fluid equation has alpha grad(p), so the particles must get -V grad(p)"
+            << " (use modelType B for a drag-only set)" << exit(FatalIOError);
+    }
     if (hasGradP && hasArchimedes)
     {
         FatalIOErrorInFunction(dict_)

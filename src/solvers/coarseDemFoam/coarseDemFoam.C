@@ -47,12 +47,35 @@ int main(int argc, char *argv[])
     const scalar maxCo = runTime.controlDict().lookupOrDefault<scalar>("maxCo", 0.5);
     label nCouple = coupling.couplingInterval();
     const label maxCouple = nCouple;
-    runTime.setDeltaT(nCouple*coupling.demTimestep());
+    // Not adjusted to the write times (adjust = false): the DEM advances exactly nCouple DEM steps
+    // per CFD step, so both clocks and the impulses they exchange stay equal. Writes and samples
+    // with adjustableRunTime then fall on the CFD step nearest to each interval.
+    runTime.setDeltaT(nCouple*coupling.demTimestep(), false);
     Info<< "CFD time step = " << nCouple << " x DEM step " << coupling.demTimestep() << " s = "
-        << runTime.deltaTValue() << " s" << (adjustTimeStep ? " (adjusted to maxCo)" : "") << nl << endl;
+        << runTime.deltaTValue() << " s"
+        << (adjustTimeStep ? " (adjusted to maxCo, at most this couplingInterval)" : "") << nl << endl;
+    {
+        const scalar steps = runTime.controlDict().get<scalar>("writeInterval")/runTime.deltaTValue();
+        const word wc(runTime.controlDict().get<word>("writeControl"));
+        if ((wc == "runTime" || wc == "adjustableRunTime") && mag(steps - std::round(steps)) > 1e-6*steps)
+        {
+            Info<< "writeInterval is " << steps << " CFD steps: fields are written at the nearest step"
+                << nl << endl;
+        }
+    }
+
+    // The fluid acceleration only when a force model needs it (virtual mass).
+    auto couple = [&]()
+    {
+        const tmp<volVectorField> DUDt
+        (
+            (coupling.needs() & forceModel::needDUfDt) ? fvc::DDt(phi, U) : tmp<volVectorField>()
+        );
+        coupling.couple(U, alpha, p, turbulence->nuEff()(), DUDt.valid() ? &DUDt() : nullptr);
+    };
 
     // First coupling before the first DEM segment, so it starts with the fluid forces.
-    coupling.couple(U, alpha, p, turbulence->nuEff()(), nullptr);
+    couple();
     alpha.oldTime() = alpha;
     alphaf = fvc::interpolate(alpha);
     alphaPhi = alphaf*phi;
@@ -67,12 +90,15 @@ int main(int argc, char *argv[])
         #include "CourantNo.H"
         if (adjustTimeStep && CoNum > SMALL)
         {
-            const label n = max(label(1), min(maxCouple, label(nCouple*min(maxCo/CoNum, 1.2))));
+            // the interval that would give maxCo, rounded down; growth limited to 20 % (at least
+            // one DEM step, so a small interval can grow back), never above the dictionary's
+            const label grown = max(nCouple + 1, label(1.2*nCouple));
+            const label n = max(label(1), min(maxCouple, min(grown, label(nCouple*maxCo/CoNum))));
             if (n != nCouple)
             {
                 nCouple = n;
                 coupling.setCouplingInterval(n);
-                runTime.setDeltaT(nCouple*coupling.demTimestep());
+                runTime.setDeltaT(nCouple*coupling.demTimestep(), false);
             }
         }
         else if (CoNum > 1)
@@ -84,13 +110,7 @@ int main(int argc, char *argv[])
 
         coupling.evolveDem();
 
-        {
-            const tmp<volVectorField> DUDt
-            (
-                (coupling.needs() & forceModel::needDUfDt) ? fvc::DDt(phi, U) : tmp<volVectorField>()
-            );
-            coupling.couple(U, alpha, p, turbulence->nuEff()(), DUDt.valid() ? &DUDt() : nullptr);
-        }
+        couple();
         alphaf = fvc::interpolate(alpha);
         alphaPhi = alphaf*phi;
 
