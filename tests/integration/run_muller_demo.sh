@@ -3,23 +3,25 @@
 # profiles, comparison with the MR data) and writes both profiles at every height, finite, with
 # the solid volume conserved and the inflow equal to the superficial velocity of the experiment;
 # the binned particle fields hold every particle's volume and the same momentum as the kernel fields.
-#   run_muller_demo.sh [-mesh 1|0.67] [-U 0.9|0.6]     (the tutorial's variants; default 1, 0.9)
+#   run_muller_demo.sh [-model M] [-mesh 1|0.67] [-U 0.9|0.6]   (the tutorial's variants; default
+#                                                                bigParticle, 1, 0.9)
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
-mesh=1; U=0.9
+model=bigParticle; mesh=1; U=0.9
 while [ $# -gt 0 ]; do
     case "$1" in
+        -model) model="$2"; shift 2 ;;
         -mesh) mesh="$2"; shift 2 ;;
         -U) U="$2"; shift 2 ;;
-        *) echo "usage: $0 [-mesh 1|0.67] [-U 0.9|0.6]" >&2; exit 2 ;;
+        *) echo "usage: $0 [-model M] [-mesh 1|0.67] [-U 0.9|0.6]" >&2; exit 2 ;;
     esac
 done
 case "$mesh" in 1) cells="8 36 100" ;; 0.67) cells="12 54 150" ;; *) echo "unknown mesh $mesh" >&2; exit 2 ;; esac
-name="bigParticle_dx${mesh}_U${U}_demo"
+name="${model}_dx${mesh}_U${U}_demo"
 case_dir="$top/tutorials/fluidizedBedMuller"
 log="/tmp/coarsedem-muller-$name.log"
-"$case_dir/Allrun" -mode demo -mesh "$mesh" -U "$U" > "$log" 2>&1 ||
+"$case_dir/Allrun" -mode demo -model "$model" -mesh "$mesh" -U "$U" > "$log" 2>&1 ||
     { echo "FAIL: Muller demo run $name (see $log)"; tail -5 "$log"; exit 1; }
 /usr/bin/python3 - "$case_dir/runs/$name" "$U" $cells <<'PYEOF'
 import math, os, re, struct, sys

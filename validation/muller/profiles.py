@@ -13,10 +13,14 @@ averages those with t_start < t <= t_end:
     alphaPUsBinned (couplingProperties binnedParticleFields on: each particle counted in the cell of
     its centre, whatever the model), the same mean of those is written as profile_vzbinned, a
     model-independent velocity profile.
-Uncertainty: batch means. The window is cut into B consecutive batches (default 10); the standard
-error of the mean is std(batch means) / sqrt(B) (for the velocity, the batch ratios). Batches much
-longer than the bubble period (~0.1-0.2 s here) make the batch means nearly independent; with short
-windows the error bar is itself uncertain, which the output says by giving B and the batch length.
+Uncertainty: batch means. The window is cut into B consecutive batches (default 10, each of at
+least --min-batch 5 samples: consecutive samples 0.01 s apart are correlated for ~0.05 s); the
+standard error of the mean is std(batch means) / sqrt(B) (for the velocity, the batch ratios).
+Fewer than two such batches: no error bar (sem nan). Batches much longer than the bubble period
+(~0.1-0.2 s here) make the batch means nearly independent; the lag-1 correlation of the batch
+means (mean over the profile's points) is written to profiles_info.txt and a warning printed above
+0.3 (a circulation slower than a batch: the SEM is then too small). Samples beyond B whole batches
+are not used, and the info says how many.
 Writes <case>/results/profile_voidfraction_z<h>mm.csv and profile_vz_z<h>mm.csv (x_m = distance
 from the left wall, value, sem) and results/profiles_info.txt. Samples from restarted runs (the
 same time written twice) are counted once.
@@ -34,9 +38,11 @@ def main():
     args = sys.argv[1:]
     if len(args) < 3:
         sys.exit(__doc__)
-    nb = 10
+    nb, min_batch = 10, 5
     if "--batches" in args:
         i = args.index("--batches"); nb = int(args[i + 1]); del args[i:i + 2]
+    if "--min-batch" in args:
+        i = args.index("--min-batch"); min_batch = int(args[i + 1]); del args[i:i + 2]
     case, t0, t1 = args[0], float(args[1]), float(args[2])
     base = os.path.join(case, "postProcessing", "profiles")
     times = sorted({float(os.path.basename(d)) for d in glob.glob(os.path.join(base, "*"))})
@@ -64,20 +70,30 @@ def main():
         ts = sorted(byt)
         y = byt[ts[0]].get("y") or byt[ts[0]].get("distance")
         n = len(ts)
-        B = min(nb, n)
+        B = max(1, min(nb, n // min_batch))
         size = n // B
+        used = B * size
+        dt = (ts[-1] - ts[0]) / (n - 1) if n > 1 else float("nan")
+        lag1 = {}
         def column(t, key):
             return byt[t][key]
-        def batch_stats(values_fn):
-            """values_fn(list of times) -> per-point value; mean over all and batch-means SEM"""
-            allv = values_fn(ts[:B * size])
+        def batch_stats(name, values_fn):
+            """values_fn(list of times) -> per-point value; mean over the used samples, batch-means
+            SEM per point (nan below two batches), and the batch means' lag-1 correlation"""
+            allv = values_fn(ts[:used])
             bm = [values_fn(ts[b * size:(b + 1) * size]) for b in range(B)]
-            sem = []
+            sem, corr = [], []
             for k in range(len(allv)):
                 xs = [m[k] for m in bm]
+                if B < 2 or any(x != x for x in xs):
+                    sem.append(float("nan"))
+                    continue
                 mu = sum(xs) / B
-                var = sum((x - mu) ** 2 for x in xs) / (B - 1) if B > 1 else float("nan")
-                sem.append(math.sqrt(var / B) if B > 1 else float("nan"))
+                var = sum((x - mu) ** 2 for x in xs) / (B - 1)
+                sem.append(math.sqrt(var / B))
+                if B > 2 and var > 0:
+                    corr.append(sum((xs[b] - mu) * (xs[b + 1] - mu) for b in range(B - 1)) / ((B - 1) * var))
+            lag1[name] = sum(corr) / len(corr) if corr else float("nan")
             return allv, sem
         def mean_alpha(tl):
             return [sum(column(t, "alpha")[k] for t in tl) / len(tl) for k in range(len(y))]
@@ -91,9 +107,10 @@ def main():
                 return out
             return mean
         def write(name, what, column_name, mean_fn):
-            v, e = batch_stats(mean_fn)
+            v, e = batch_stats(name, mean_fn)
             with open(os.path.join(case, "results", f"profile_{name}_z{h}mm.csv"), "w") as f:
-                f.write(f"# time-averaged {what}, z = {h} mm, window ({t0}, {t1}] s, {n} samples, {B} batches of {size}\n")
+                f.write(f"# time-averaged {what}, z = {h} mm, window ({t0}, {t1}] s, {used} of {n} samples, "
+                        f"{B} batches of {size}\n")
                 f.write(f"x_m,{column_name},sem\n")
                 for k in range(len(y)):
                     f.write(f"{y[k]:.6g},{v[k]:.6g},{e[k]:.3g}\n")
@@ -105,7 +122,14 @@ def main():
         if "alphaPUsBinned_2" in byt[ts[0]] and "alphaPBinned" in byt[ts[0]]:
             write("vzbinned", "(solid-weighted) vertical particle velocity, particles binned by their centre's cell",
                   "vz_particle_m_per_s", mean_ratio("alphaPUsBinned_2", "alphaPBinned"))
-        info.append(f"z = {h} mm: {n} samples in ({t0}, {t1}] s, {B} batches of {size} samples ({size * 0.01:.3g} s)")
+        corr = ", ".join(f"{k} {c:.2f}" for k, c in sorted(lag1.items()))
+        info.append(f"z = {h} mm: {n} samples in ({t0}, {t1}] s (every {dt:.3g} s), {used} used in {B} batches of "
+                    f"{size} ({size * dt:.3g} s)" + ("" if B > 1 else ": too few for an error bar (sem nan)")
+                    + f"; lag-1 correlation of the batch means: {corr}")
+        for k, c in sorted(lag1.items()):
+            if c > 0.3:
+                print(f"profiles.py: warning: z = {h} mm {k}: batch means correlated ({c:.2f} > 0.3), "
+                      "the SEM is too small (a slow circulation: a longer window or longer batches)")
     with open(os.path.join(case, "results", "profiles_info.txt"), "w") as f:
         f.write("\n".join(info) + "\n")
     print("\n".join(info))

@@ -12,7 +12,7 @@ profile CSVs and comparison plots to <out>/<run>_<commit>/ (runs of one model at
 side by side) and writes <out>/error_vs_runtime.{csv,md,png}. Where a run also has the binned
 particle velocity (profile_vzbinned, binnedParticleFields on), its error is a further column.
 """
-import glob, os, re, shutil, sys
+import csv, glob, os, re, shutil, sys
 
 def log_segments(log):
     """Per start of the solver (a log continued after a restart holds several, each beginning with
@@ -54,10 +54,11 @@ def main():
         if not os.path.exists(path):
             print(f"summary.py: {name}: no comparison yet, skipped")
             continue
-        for line in open(path).read().split("\n")[1:]:
-            if line:
-                q, z, rms, mx, sem, n = line.split(",")
-                errs[(q, z)] = (float(rms), float(mx), float(sem))
+        with open(path) as f:
+            for r in csv.DictReader(f):
+                # (RMS, max, SEM, symmetrised RMS, noise-removed RMS); older files lack the last two
+                errs[(r["quantity"], r["z_mm"])] = tuple(float(r.get(k) or "nan") for k in (
+                    "rms_error", "max_error", "mean_batch_sem", "rms_error_symmetrised", "rms_error_noise_removed"))
         # wall_seconds.txt: one line per (re)start that returned, "<wall seconds> [<MPI ranks>]";
         # the solver log has every start, also one cut by a kill: the larger sum is the wall time
         wpath = os.path.join(run, "wall_seconds.txt")
@@ -78,15 +79,15 @@ def main():
         coupling = sum(st.get(k, 0) for k in ("locate", "kernel", "smoothing", "forces", "exchange"))
         info = open(os.path.join(run, "results", "profiles_info.txt")).readline().strip()
         label = f"{name}_{commit.replace(' ', '+')}"
-        nan3 = (float("nan"),) * 3
+        nan5 = (float("nan"),) * 5
+        void = errs.get(("void_fraction", "16.4"), nan5)
+        vz = errs.get(("vz_particle_m_per_s", "15"), nan5)
+        vzb = errs.get(("vz_particle_binned_m_per_s", "15"), nan5)
         rows.append(dict(run=label, model=name.split("_")[0], wall=wall, core=core, ranks=ranks, commit=commit, coupling_share=coupling / total,
                          fluid_share=st.get("fluid", 0) / total, dem_share=st.get("DEM", 0) / total,
-                         void_rms=errs.get(("void_fraction", "16.4"), (float("nan"),) * 3)[0],
-                         void_sem=errs.get(("void_fraction", "16.4"), (float("nan"),) * 3)[2],
-                         vz_rms=errs.get(("vz_particle_m_per_s", "15"), (float("nan"),) * 3)[0],
-                         vz_sem=errs.get(("vz_particle_m_per_s", "15"), (float("nan"),) * 3)[2],
-                         vzb_rms=errs.get(("vz_particle_binned_m_per_s", "15"), nan3)[0],
-                         vzb_sem=errs.get(("vz_particle_binned_m_per_s", "15"), nan3)[2], window=info))
+                         void_rms=void[0], void_sem=void[2], void_sym=void[3], void_clean=void[4],
+                         vz_rms=vz[0], vz_sem=vz[2], vz_sym=vz[3], vz_clean=vz[4],
+                         vzb_rms=vzb[0], vzb_sem=vzb[2], window=info))
         dest = os.path.join(out, label)
         os.makedirs(dest, exist_ok=True)
         for f in glob.glob(os.path.join(run, "results", "*.csv")) + glob.glob(os.path.join(run, "results", "*.txt")):
@@ -94,16 +95,26 @@ def main():
         for f in glob.glob(os.path.join(run, "results", "comparison", "*")):
             shutil.copy(f, dest)
     with open(os.path.join(out, "error_vs_runtime.csv"), "w") as f:
-        f.write("run,model,commit,ranks,wall_time_s,core_seconds,coupling_share,fluid_share,dem_share,voidfraction_z16.4_rms,voidfraction_z16.4_mean_sem,vz_z15_rms_m_per_s,vz_z15_mean_sem,vz_binned_z15_rms_m_per_s,vz_binned_z15_mean_sem\n")
+        f.write("run,model,commit,ranks,wall_time_s,core_seconds,coupling_share,fluid_share,dem_share,voidfraction_z16.4_rms,voidfraction_z16.4_mean_sem,vz_z15_rms_m_per_s,vz_z15_mean_sem,vz_binned_z15_rms_m_per_s,vz_binned_z15_mean_sem,"
+                "voidfraction_z16.4_rms_symmetrised,voidfraction_z16.4_rms_noise_removed,vz_z15_rms_symmetrised,vz_z15_rms_noise_removed\n")
         for r in rows:
             f.write(f"{r['run']},{r['model']},{r['commit']},{r['ranks']},{r['wall']:.0f},{r['core']:.0f},{r['coupling_share']:.3f},{r['fluid_share']:.3f},{r['dem_share']:.3f},"
-                    f"{r['void_rms']:.4f},{r['void_sem']:.4f},{r['vz_rms']:.4f},{r['vz_sem']:.4f},{r['vzb_rms']:.4f},{r['vzb_sem']:.4f}\n")
+                    f"{r['void_rms']:.4f},{r['void_sem']:.4f},{r['vz_rms']:.4f},{r['vz_sem']:.4f},{r['vzb_rms']:.4f},{r['vzb_sem']:.4f},"
+                    f"{r['void_sym']:.4f},{r['void_clean']:.4f},{r['vz_sym']:.4f},{r['vz_clean']:.4f}\n")
     with open(os.path.join(out, "error_vs_runtime.md"), "w") as f:
         f.write("| run | commit | ranks | wall time (s) | core-seconds | coupling share | gas fraction RMS, z = 16.4 mm | particle v_z RMS, z = 15 mm (m/s) | binned particle v_z RMS, z = 15 mm (m/s) |\n|---|---|---|---|---|---|---|---|---|\n")
+        def cell(rms, sem, sym, clean):
+            more = "" if sym != sym else f"; sym. {sym:.3f}; noise removed {clean:.3f}"
+            return f"{rms:.3f} (SEM {sem:.3f}{more})"
         for r in rows:
             share = "n/a" if r['coupling_share'] != r['coupling_share'] else f"{100*r['coupling_share']:.1f} %"
             binned = "n/a" if r['vzb_rms'] != r['vzb_rms'] else f"{r['vzb_rms']:.3f} (SEM {r['vzb_sem']:.3f})"
-            f.write(f"| {r['run']} | {r['commit']} | {r['ranks']} | {r['wall']:.0f} | {r['core']:.0f} | {share} | {r['void_rms']:.3f} (SEM {r['void_sem']:.3f}) | {r['vz_rms']:.3f} (SEM {r['vz_sem']:.3f}) | {binned} |\n")
+            f.write(f"| {r['run']} | {r['commit']} | {r['ranks']} | {r['wall']:.0f} | {r['core']:.0f} | {share} | "
+                    f"{cell(r['void_rms'], r['void_sem'], r['void_sym'], r['void_clean'])} | "
+                    f"{cell(r['vz_rms'], r['vz_sem'], r['vz_sym'], r['vz_clean'])} | {binned} |\n")
+        f.write("\nSEM: the mean batch-means standard error of the simulated profile; sym.: RMS of the profile "
+                "averaged with its mirror image about the mid-width; noise removed: sqrt(RMS^2 - mean SEM^2) "
+                "(compare.py).\n")
         if rows:
             f.write(f"\nAveraging window: {rows[0]['window']}\n")
     try:

@@ -33,6 +33,8 @@ coarseDemCoupling::coarseDemCoupling
     voidFraction_(dict_, demMesh_),
     backgroundKernels_(nullptr),
     binKernels_(nullptr),
+    particleFieldsInterval_(dict_.lookupOrDefault<scalar>("particleFieldsInterval", 0)),
+    particleFieldsIndex_(-1),
     needs_(0),
     halo_(mesh),
     solidVolumeParticles_(0), solidVolumeCells_(0), momentumImbalance_(0), forceScale_(0),
@@ -132,6 +134,13 @@ coarseDemCoupling::coarseDemCoupling
 
     if (dict_.lookupOrDefault<Switch>("solidVelocityField", false))
     {
+        if (voidFraction_.smoothingName() == "sizeAwareDiffusion")
+        {
+            WarningInFunction
+                << "solidVelocityField with smoothingModel sizeAwareDiffusion: alphaPUs is not smoothed"
+                << " (each size class has its own bandwidth), so alphaPUs/alphaP is not the solid velocity"
+                << endl;
+        }
         alphaPUs.reset
         (
             new volVectorField
@@ -249,6 +258,18 @@ void coarseDemCoupling::spread(const cdc_kernels* k, const double* local, int nc
     buffer_.assign(local, local + size_t(n)*ncomp);
     buffer_.insert(buffer_.end(), ghostBuffer_.begin(), ghostBuffer_.end());
     demMesh_.check(cdc_spread(k, buffer_.data(), ncomp, out), "spread");
+}
+
+bool coarseDemCoupling::particleFieldsDue()
+{
+    const Time& rt = mesh_.time();
+    if (particleFieldsInterval_ <= 0) return true;
+    // the step nearest each multiple of the interval since the start, as an adjustableRunTime
+    // function object samples (Time's and timeControl's index rule), plus the write times
+    const label index = label((rt.value() - rt.startTime().value() + 0.5*rt.deltaTValue())/particleFieldsInterval_);
+    if (index <= particleFieldsIndex_ && !rt.writeTime()) return false;
+    particleFieldsIndex_ = max(index, particleFieldsIndex_);
+    return true;
 }
 
 void coarseDemCoupling::binParticles
@@ -419,15 +440,25 @@ void coarseDemCoupling::couple
         forAll(q, i) q[i] = -(K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i])/rho;
     }
     spread(reinterpret_cast<const double*>(q.cdata()), 3, reinterpret_cast<double*>(fFluid.primitiveFieldRef().data()));
-    // particle volume x velocity, spread with the method's kernels and/or binned by centre
-    if (alphaPUs.valid() || binKernels_) forAll(q, i) q[i] = volume_[i]*state_.v[i];
-    if (alphaPUs.valid())
+    timers_.stop();
+
+    // output fields (no effect on the flow): particle volume x velocity, spread with the method's
+    // kernels and/or binned by centre; only on the steps they are sampled or written
+    if ((alphaPUs.valid() || binKernels_) && particleFieldsDue())
     {
-        spread(reinterpret_cast<const double*>(q.cdata()), 3,
-               reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data()));
-        alphaPUs().correctBoundaryConditions();
+        timers_.start(stageTimers::fields);
+        forAll(q, i) q[i] = volume_[i]*state_.v[i];
+        if (alphaPUs.valid())
+        {
+            double* aUs = reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data());
+            spread(reinterpret_cast<const double*>(q.cdata()), 3, aUs);
+            voidFraction_.smoothLikeAlpha(aUs, 3);   // as alphaP, so alphaPUs/alphaP is a velocity
+            alphaPUs().correctBoundaryConditions();
+        }
+        if (binKernels_) binParticles(cp, cg, q);
+        timers_.stop();
     }
-    if (binKernels_) binParticles(cp, cg, q);
+    timers_.start(stageTimers::exchange);
     Ksl.correctBoundaryConditions();
     KslUs.correctBoundaryConditions();
     fFluid.correctBoundaryConditions();

@@ -151,6 +151,21 @@ word voidFraction::smoothingName() const
     }
 }
 
+bool voidFraction::smoothLikeAlpha(double* field, int ncomp) const
+{
+    if (smoothing_ == smoothing::off) return true;
+    if (smoothing_ != smoothing::diffusion) return false;
+    const label nc = mesh_.mesh().nCells();
+    std::vector<double> c(nc);
+    for (int d = 0; d < ncomp; ++d)
+    {
+        for (label i = 0; i < nc; ++i) c[i] = field[size_t(i)*ncomp + d];
+        mesh_.check(cdc_diffuse(mesh_.context(), &diffusion_, c.data()), "diffusion smoothing");
+        for (label i = 0; i < nc; ++i) field[size_t(i)*ncomp + d] = c[i];
+    }
+    return true;
+}
+
 void voidFraction::update
 (
     const cdc_particles& p, const cdc_particles& ghosts, const particleHalo& halo, scalarField& alphaP
