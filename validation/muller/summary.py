@@ -77,7 +77,7 @@ def main():
         st = stage_times(segs) or {}
         total = sum(st.values()) or float("nan")
         coupling = sum(st.get(k, 0) for k in ("locate", "kernel", "smoothing", "forces", "exchange"))
-        info = open(os.path.join(run, "results", "profiles_info.txt")).readline().strip()
+        info = open(os.path.join(run, "results", "profiles_info.txt")).readline().split(";")[0].strip()
         label = f"{name}_{commit.replace(' ', '+')}"
         nan5 = (float("nan"),) * 5
         void = errs.get(("void_fraction", "16.4"), nan5)
