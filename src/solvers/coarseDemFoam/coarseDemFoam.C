@@ -93,7 +93,8 @@ int main(int argc, char *argv[])
             // the interval that would give maxCo, rounded down; growth limited to 20 % (at least
             // one DEM step, so a small interval can grow back), never above the dictionary's
             const label grown = max(nCouple + 1, label(1.2*nCouple));
-            const label n = max(label(1), min(maxCouple, min(grown, label(nCouple*maxCo/CoNum))));
+            const scalar target = min(scalar(maxCouple), nCouple*maxCo/CoNum);   // clamped before the cast
+            const label n = max(label(1), min(grown, label(target)));
             if (n != nCouple)
             {
                 nCouple = n;
