@@ -26,6 +26,13 @@ static inline int accepts(const cdc_context *ctx, enum accept_kind kind, int32_t
     return d2 < radius * radius;
 }
 
+/* Signed distance of x from the plane, positive on the side its normal points to (outside). */
+static double plane_offset(const cdc_plane *p, const double x[3])
+{
+    return (x[0] - p->origin[0]) * p->normal[0] + (x[1] - p->origin[1]) * p->normal[1] +
+           (x[2] - p->origin[2]) * p->normal[2];
+}
+
 /* Add the plane of wall face f if it is within `radius` of x and not yet known; -1 if it would be
  * one more than CDC_MAX_PLANES. */
 static int collect_plane(const cdc_mesh *m, int32_t f, const double x[3], double radius, cdc_plane *planes,
@@ -39,9 +46,7 @@ static int collect_plane(const cdc_mesh *m, int32_t f, const double x[3], double
     for (int k = 0; k < *n_planes; ++k) {
         const cdc_plane *q = planes + k;
         const double dn = n[0] * q->normal[0] + n[1] * q->normal[1] + n[2] * q->normal[2];
-        const double off = (C[0] - q->origin[0]) * q->normal[0] + (C[1] - q->origin[1]) * q->normal[1] +
-                           (C[2] - q->origin[2]) * q->normal[2];
-        if (dn > 1.0 - 1e-9 && fabs(off) <= 1e-9 * radius) return 0; /* same plane */
+        if (dn > 1.0 - 1e-9 && fabs(plane_offset(q, C)) <= 1e-9 * radius) return 0; /* same plane */
     }
     if (*n_planes >= CDC_MAX_PLANES) return -1;
     cdc_plane *p = planes + (*n_planes)++;
@@ -106,8 +111,7 @@ cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t st
 
 static void reflect(const double x[3], const cdc_plane *p, double out[3])
 {
-    const double s = (x[0] - p->origin[0]) * p->normal[0] + (x[1] - p->origin[1]) * p->normal[1] +
-                     (x[2] - p->origin[2]) * p->normal[2];
+    const double s = plane_offset(p, x);
     for (int d = 0; d < 3; ++d) out[d] = x[d] - 2.0 * s * p->normal[d];
 }
 
@@ -122,12 +126,7 @@ int cdc_mirror_images(const double x[3], const cdc_plane *planes, int n_planes, 
             double y[3];
             reflect(images[head], planes + k, y);
             double beyond = 0.0; /* how far y lies outside the domain side of the planes */
-            for (int q = 0; q < n_planes; ++q) {
-                const cdc_plane *pl = planes + q;
-                const double s = (y[0] - pl->origin[0]) * pl->normal[0] + (y[1] - pl->origin[1]) * pl->normal[1] +
-                                 (y[2] - pl->origin[2]) * pl->normal[2];
-                if (s > beyond) beyond = s;
-            }
+            for (int q = 0; q < n_planes; ++q) beyond = fmax(beyond, plane_offset(planes + q, y));
             if (beyond >= reach) continue;
             int known = 0;
             for (int m = 0; m < n && !known; ++m) known = cdc_dist2(y, images[m]) <= same2;
