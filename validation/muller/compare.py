@@ -45,13 +45,14 @@ def compare_one(data_path, sim_path, q, h, U, out):
     """RMS and maximum error of one simulated profile against one data file, and its PNG."""
     _, dx, dy, _ = read_profile(data_path)
     _, sx, sy, se = read_profile(sim_path)
-    err = [interp(x, sx, sy) - y for x, y in zip(dx, dy)]
+    sim = [interp(x, sx, sy) for x in dx]
+    err = [s - y for s, y in zip(sim, dy)]
     rms = math.sqrt(sum(e * e for e in err) / len(err))
     mx = max(abs(e) for e in err)
     sem = [e for e in se if not math.isnan(e)]
     mean_sem = sum(sem) / len(sem) if sem else float("nan")
     width = sx[0] + sx[-1]   # the samples are symmetric about the mid-width
-    err_sym = [0.5 * (interp(x, sx, sy) + interp(width - x, sx, sy)) - y for x, y in zip(dx, dy)]
+    err_sym = [0.5 * (s + interp(width - x, sx, sy)) - y for s, x, y in zip(sim, dx, dy)]
     rms_sym = math.sqrt(sum(e * e for e in err_sym) / len(err_sym))
     noise2 = sum(interp(x, sx, se) ** 2 for x in dx) / len(dx) if sem else float("nan")
     rms_clean = math.sqrt(max(rms * rms - noise2, 0.0)) if sem else float("nan")
