@@ -134,7 +134,7 @@ coarseDemCoupling::coarseDemCoupling
 
     if (dict_.lookupOrDefault<Switch>("solidVelocityField", false))
     {
-        if (voidFraction_.smoothingName() == "sizeAwareDiffusion")
+        if (!voidFraction_.canSmoothLikeAlpha())
         {
             WarningInFunction
                 << "solidVelocityField with smoothingModel sizeAwareDiffusion: alphaPUs is not smoothed"

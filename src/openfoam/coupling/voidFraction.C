@@ -151,10 +151,9 @@ word voidFraction::smoothingName() const
     }
 }
 
-bool voidFraction::smoothLikeAlpha(double* field, int ncomp) const
+void voidFraction::smoothLikeAlpha(double* field, int ncomp) const
 {
-    if (smoothing_ == smoothing::off) return true;
-    if (smoothing_ != smoothing::diffusion) return false;
+    if (smoothing_ != smoothing::diffusion) return;
     const label nc = mesh_.mesh().nCells();
     std::vector<double> c(nc);
     for (int d = 0; d < ncomp; ++d)
@@ -163,7 +162,6 @@ bool voidFraction::smoothLikeAlpha(double* field, int ncomp) const
         mesh_.check(cdc_diffuse(mesh_.context(), &diffusion_, c.data()), "diffusion smoothing");
         for (label i = 0; i < nc; ++i) field[size_t(i)*ncomp + d] = c[i];
     }
-    return true;
 }
 
 void voidFraction::update
