@@ -432,6 +432,18 @@ void coarseDemCoupling::couple
         forAll(q, i) q[i] = Kr[i]*state_.v[i];
         spread(reinterpret_cast<const double*>(q.cdata()), 3, reinterpret_cast<double*>(KslUs.primitiveFieldRef().data()));
         forAll(q, i) q[i] = -fReact_[i]/rho;
+        if (backgroundKernels_)
+        {
+            // The implicit sink Ksl U, spread with the void-fraction kernels, takes K u_s from the
+            // fluid (u_k: U gathered with those kernels), but the particles got K u_f with u_f from
+            // the background kernels. The difference K (u_f - u_k) goes to the fluid explicitly, so
+            // the phases exchange equal and opposite momentum (as CFDEM splits its drag into an
+            // implicit part and an explicit rest).
+            vectorField uKernel(n);
+            gather(voidFraction_.kernels(), reinterpret_cast<const double*>(U.primitiveField().cdata()), 3,
+                   reinterpret_cast<double*>(uKernel.data()));
+            forAll(q, i) q[i] -= Kr[i]*(state_.Uf[i] - uKernel[i]);
+        }
     }
     else
     {
