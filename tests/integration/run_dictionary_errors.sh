@@ -33,11 +33,12 @@ check() {
     fi
 }
 
-# check_runs NAME 'sed expression': a valid edit; the case must run to its end (exit 0)
+# check_runs NAME 'sed expression' ['extra shell on the case']: a valid edit; the case must run to its end (exit 0)
 check_runs() {
-    local name="$1" edit="$2" c="$work/$1"
+    local name="$1" edit="$2" extra="${3:-}" c="$work/$1"
     cp -r "$base" "$c"
     sed -i "$edit" "$c/constant/couplingProperties"
+    [ -n "$extra" ] && (cd "$c" && eval "$extra")
     (cd "$c" && timeout 120 coarseDemFoam > log 2>&1)
     local rc=$?
     if [ $rc -eq 0 ] && grep -q "^End" "$c/log"; then
@@ -88,6 +89,11 @@ check particle_lost '' "the DEM lost 1 particle(s) in the CFD step ending at tim
 # LIGGGHTS already stops the run with a stack trace; the test turns trapping off to reach the check.
 check particle_nan_velocity '' "particle 2001 has a non-finite velocity at time 0" \
     "echo 'export FOAM_SIGFPE=false' > env.sh; sed -i 's/^fix *cfd.*/&\ncreate_atoms 1 single 0.005 0.005 0.05 units box\nset atom 2001 diameter 0.001 density 2500\ngroup bad id 2001\nvariable huge equal 1e308*10\nvariable bad equal v_huge-v_huge\nvelocity bad set v_bad 0 0/' DEM/in.liggghts"
+# a fluid restart at a time without the DEM's state: stop, naming the missing file (demFreshStart allows it)
+check restart_without_dem_state '' "no DEM restart file" \
+    "cp -r 0 0.0005 && sed -i 's/^startTime .*/startTime 0.0005;/' system/controlDict"
+check_runs restart_dem_fresh_start '$a demFreshStart true;' \
+    "cp -r 0 0.0005 && sed -i 's/^startTime .*/startTime 0.0005;/' system/controlDict"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

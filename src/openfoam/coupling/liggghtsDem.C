@@ -43,6 +43,16 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     const fileName restartFile = caseDir/mesh.time().timeName()/"dem.restart";
     const std::string restart = isFile(restartFile) ? std::string(restartFile) : std::string("none");
     restarted_ = restart != "none";
+    // A fluid starting after t = 0 without the DEM state of that time would meet particles from the
+    // script's initial state: an inconsistent restart, stopped unless asked for (demFreshStart).
+    if (!restarted_ && mesh.time().value() > 0 && !dict.lookupOrDefault<Switch>("demFreshStart", false))
+    {
+        FatalIOErrorInFunction(dict)
+            << "the fluid starts at time " << mesh.time().timeName() << " but there is no DEM restart file "
+            << restartFile << " (written at write times when demRestart is on)" << nl
+            << "    restart from a time that has one, or set demFreshStart true in " << dict.name()
+            << " to start the DEM from its script's initial state" << exit(FatalIOError);
+    }
     // COARSEDEM_DEM_SCREEN=1 keeps LIGGGHTS' screen output on stdout (for debugging DEM errors)
     std::vector<std::string> args =
         {"liggghts", "-log", logFile, "-var", "restart", restart, "-var", "restarting", restart == "none" ? "0" : "1"};
