@@ -134,6 +134,16 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
             << "unknown smoothingModel " << sm << " in " << dict.name() << nl
             << "    valid smoothing models: off, diffusion, sizeAwareDiffusion" << exit(FatalIOError);
     }
+    if (smoothing_ != smoothing::off && Pstream::parRun())
+    {
+        // The core diffuses on one rank's cells with zero flux through processor faces: the
+        // smoothing would stop at every processor boundary and differ from the serial run's.
+        FatalIOErrorInFunction(dict)
+            << "smoothingModel " << sm << " in " << dict.name() << " runs in serial only: the"
+            << " diffusion has no halo exchange, so it would stop at the processor boundaries" << nl
+            << "    run serial, or use a kernel of similar width (gaussian) in parallel"
+            << exit(FatalIOError);
+    }
 }
 
 voidFraction::~voidFraction()
@@ -202,8 +212,7 @@ void voidFraction::update
                 cdc_alpha_p_diffused_by_size(ctx, kernels_, &all, bandwidthOverD_, classRatio_, &diffusion_, a, &nc),
                 "size-aware diffusion smoothing"
             );
-            const int n = nc;
-            nClasses_ = n;
+            nClasses_ = nc;
             break;
         }
     }

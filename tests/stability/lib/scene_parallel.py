@@ -10,6 +10,8 @@
         A fluidized run: the np = 2 run's checks, particles straddling the boundary at the start and
         the number that crossed it during the run (must be > 0: the scene is about crossing), and
         the serial vs np = 2 differences at the end (measured, not asserted).
+    scene_parallel.py refused - <np2 case> <scene> [message]
+        The np = 2 run must stop with the message (default: the decomposition mismatch).
 """
 import math, os, sys
 
@@ -20,13 +22,14 @@ import stablib
 DECOMPOSITION_MISMATCH = "must split the domain at the same planes"
 
 
-def refused(par, scene):
-    """The np = 2 run must stop at once, naming the cause: DEM and CFD split the domain differently."""
+def refused(par, scene, cause=DECOMPOSITION_MISMATCH):
+    """The np = 2 run must stop at once, naming the cause (by default: DEM and CFD split the domain
+    differently)."""
     rc = stablib.exit_status(par)
-    said = stablib.log_has(par, DECOMPOSITION_MISMATCH)
+    said = stablib.log_has(par, cause)
     ok = rc != 0 and said
     print("%s %s: np=2 exit status %d, %s" % ("PASS" if ok else "FAIL", scene, rc,
-          "stopped naming the decomposition mismatch" if said else "no decomposition-mismatch message: "
+          ("stopped saying '%s'" % cause) if said else ("no message '%s': " % cause)
           + stablib.failure_reason(par)))
     return 0 if ok else 1
 
@@ -34,7 +37,7 @@ def refused(par, scene):
 def main():
     mode, serial, par, scene = sys.argv[1:5]
     if mode == "refused":
-        return refused(par, scene)
+        return refused(par, scene, *sys.argv[5:6])
     p = stablib.params(par)
     n0 = int(p["N_PARTICLES"])
     W = float(p["WIDTH_MM"]) * 1e-3
