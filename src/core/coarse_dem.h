@@ -185,6 +185,28 @@ typedef struct cdc_diffusion_params {
 
 cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double *phi);
 
+/* Processor faces of one rank's mesh, for diffusion across ranks. The core has no MPI: the caller
+ * (one rank of a decomposed case) lists this rank's processor faces and supplies the halo exchange
+ * and the global sum. With a halo set, cdc_diffuse couples the ranks through these faces (same
+ * two-point flux as internal faces, CG with global dot products), so the smoothing equals the
+ * serial one to the solver tolerance and the total sum(phi V) over all ranks is conserved to
+ * round-off. Every rank must call cdc_diffuse the same number of times (the callbacks are
+ * collective). The arrays must outlive the context or the next cdc_context_set_halo. */
+typedef struct cdc_halo {
+    int32_t n_faces;
+    const int32_t *cell;       /* this rank's cell next to each processor face */
+    const double *coeff;       /* |S_f| / |C_N - C_P|, C_N the neighbour rank's cell centre */
+    const double *nbr_volume;  /* volume of the neighbour rank's cell (for the D rule) */
+    /* nbr[i] = the neighbour rank's value of its cell across face i, given this rank's cell values */
+    int (*exchange)(void *user, const double *cell_values, double *nbr);
+    /* values[0..n) summed over all ranks, in place */
+    int (*sum)(void *user, double *values, int n);
+    void *user;                /* passed to the callbacks */
+} cdc_halo;
+
+/* Set (or with NULL clear) the halo of a context; returns CDC_ERR_ARGUMENT on inconsistent input. */
+cdc_status cdc_context_set_halo(cdc_context *ctx, const cdc_halo *halo);
+
 /* Size-aware diffusion for polydisperse beds: particles are grouped in diameter classes (width
  * class_ratio, e.g. 1.1 = 10 %), each class's PCM field is smoothed with its own bandwidth
  * b_k = bandwidth_over_d * d_k and the classes are summed. Writes alpha_p. */

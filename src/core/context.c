@@ -241,5 +241,29 @@ void cdc_context_destroy(cdc_context *ctx)
     cdc_dvec_free(&ctx->class_q);
     cdc_dvec_free(&ctx->class_field);
     cdc_dvec_free(&ctx->class_sum);
+    cdc_dvec_free(&ctx->halo_coeff);
+    cdc_dvec_free(&ctx->halo_nbr);
     free(ctx);
+}
+
+cdc_status cdc_context_set_halo(cdc_context *ctx, const cdc_halo *halo)
+{
+    if (!ctx) return CDC_ERR_ARGUMENT;
+    ctx->has_halo = 0;
+    if (!halo) return CDC_OK;
+    if (halo->n_faces < 0 || !halo->exchange || !halo->sum ||
+        (halo->n_faces > 0 && (!halo->cell || !halo->coeff || !halo->nbr_volume)))
+        return cdc_fail(ctx, CDC_ERR_ARGUMENT, "halo: missing faces, coefficients, volumes or callbacks");
+    for (int32_t i = 0; i < halo->n_faces; ++i)
+        if (halo->cell[i] < 0 || halo->cell[i] >= ctx->mesh->n_cells || !(halo->coeff[i] > 0.0) ||
+            !(halo->nbr_volume[i] > 0.0))
+            return cdc_fail(ctx, CDC_ERR_ARGUMENT,
+                            "halo: processor face %d has cell %d, coefficient %g, neighbour volume %g", (int)i,
+                            (int)halo->cell[i], halo->coeff[i], halo->nbr_volume[i]);
+    if (cdc_dvec_reserve(&ctx->halo_coeff, (size_t)halo->n_faces + 1) ||
+        cdc_dvec_reserve(&ctx->halo_nbr, (size_t)halo->n_faces + 1))
+        return cdc_fail(ctx, CDC_ERR_NOMEM, "halo: out of memory");
+    ctx->halo = *halo;
+    ctx->has_halo = 1;
+    return CDC_OK;
 }

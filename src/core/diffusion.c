@@ -13,8 +13,11 @@
  * flux form, phi_new = phi_old + dtau/V * sum_f a_f (phi*_N - phi*_P), where phi* is the CG
  * solution. Each face flux leaves one cell and enters the other, so sum(phi V) cannot change.
  *
- * Processor faces are zero-flux here: the core sees one rank's mesh. (Parallel smoothing needs a
- * halo exchange by the caller.)
+ * Parallel: the core sees one rank's mesh. Without a halo (cdc_context_set_halo) processor faces
+ * are zero-flux; with one, each processor face carries the same two-point flux with the neighbour
+ * rank's value from the caller's exchange, and the CG's dot products are summed over the ranks, so
+ * the ranks solve the serial system together. Both sides of a processor face compute the same flux
+ * from the same exchanged values, so the flux-form update conserves the total over all ranks.
  */
 #include "internal.h"
 
@@ -37,9 +40,11 @@ static cdc_status face_coefficients(cdc_context *ctx)
     return CDC_OK;
 }
 
-/* y = K x, the (negative semi-definite) Laplacian times volume: y_P = sum_f a_f (x_N - x_P). */
-static void laplacian(const cdc_mesh *m, const double *a, const double *x, double *y)
+/* y = K x, the (negative semi-definite) Laplacian times volume: y_P = sum_f a_f (x_N - x_P), over
+ * internal faces and, with a halo, processor faces (coefficients ctx->halo_coeff). */
+static cdc_status laplacian(cdc_context *ctx, const double *a, const double *x, double *y)
 {
+    const cdc_mesh *m = ctx->mesh;
     memset(y, 0, (size_t)m->n_cells * sizeof *y);
     for (int32_t f = 0; f < m->n_internal_faces; ++f) {
         const int32_t o = m->owner[f], n = m->neighbour[f];
@@ -47,6 +52,30 @@ static void laplacian(const cdc_mesh *m, const double *a, const double *x, doubl
         y[o] += flux;
         y[n] -= flux;
     }
+    if (!ctx->has_halo) return CDC_OK;
+    const cdc_halo *h = &ctx->halo;
+    double *xn = ctx->halo_nbr.v;
+    if (h->exchange(h->user, x, xn))
+        return cdc_fail(ctx, CDC_ERR_ARGUMENT, "diffusion: the halo exchange failed");
+    for (int32_t i = 0; i < h->n_faces; ++i) y[h->cell[i]] += ctx->halo_coeff.v[i] * (xn[i] - x[h->cell[i]]);
+    return CDC_OK;
+}
+
+/* values[0..n) summed over the ranks (nothing to do in serial) */
+static cdc_status global_sum(cdc_context *ctx, double *values, int n)
+{
+    if (ctx->has_halo && ctx->halo.sum(ctx->halo.user, values, n))
+        return cdc_fail(ctx, CDC_ERR_ARGUMENT, "diffusion: the global sum failed");
+    return CDC_OK;
+}
+
+/* D at a face: 1, or with the D rule the harmonic mean of the cells' D (0.001 in cells larger than 4 d) */
+static double face_diffusivity(const cdc_diffusion_params *prm, double volume_p, double volume_n)
+{
+    if (!prm->d_rule) return 1.0;
+    const double lim = 4.0 * prm->particle_diameter;
+    const double Dp = cbrt(volume_p) > lim ? 0.001 : 1.0, Dn = cbrt(volume_n) > lim ? 0.001 : 1.0;
+    return 2.0 * Dp * Dn / (Dp + Dn);
 }
 
 cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double *phi)
@@ -71,16 +100,12 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
 
     /* Face coefficients times D_f. The seed's D rule: D = 0.001 in cells larger than 4 d, so that
      * smoothing degenerates to the centroid method there; the face value is the harmonic mean. */
-    for (size_t f = 0; f < ni; ++f) {
-        double D = 1.0;
-        if (prm->d_rule) {
-            const double lim = 4.0 * prm->particle_diameter;
-            const double Do = cbrt(m->cell_volumes[m->owner[f]]) > lim ? 0.001 : 1.0;
-            const double Dn = cbrt(m->cell_volumes[m->neighbour[f]]) > lim ? 0.001 : 1.0;
-            D = 2.0 * Do * Dn / (Do + Dn);
-        }
-        a[f] = D * ctx->face_coeff[f];
-    }
+    for (size_t f = 0; f < ni; ++f)
+        a[f] = face_diffusivity(prm, m->cell_volumes[m->owner[f]], m->cell_volumes[m->neighbour[f]]) *
+               ctx->face_coeff[f];
+    const cdc_halo *h = ctx->has_halo ? &ctx->halo : NULL;
+    for (int32_t i = 0; h && i < h->n_faces; ++i)
+        ctx->halo_coeff.v[i] = face_diffusivity(prm, m->cell_volumes[h->cell[i]], h->nbr_volume[i]) * h->coeff[i];
     const int n_steps = prm->n_steps > 0 ? prm->n_steps : 4;
     const double tol = prm->tolerance > 0.0 ? prm->tolerance : 1e-10;
     const int max_it = prm->max_iterations > 0 ? prm->max_iterations : 1000;
@@ -92,49 +117,54 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
         diag[m->owner[f]] += a[f];
         diag[m->neighbour[f]] += a[f];
     }
+    for (int32_t i = 0; h && i < h->n_faces; ++i) diag[h->cell[i]] += ctx->halo_coeff.v[i];
 
     /* Work on x so phi is untouched if a solve fails. */
     memcpy(x, phi, nc * sizeof *x);
     for (int step = 0; step < n_steps; ++step) {
         /* Solve A y = V/dtau x by preconditioned CG from y = x (so r = K x). */
         memcpy(y, x, nc * sizeof *y);
-        laplacian(m, a, y, r);
-        double bnorm = 0.0, rnorm = 0.0, rz = 0.0;
+        if ((st = laplacian(ctx, a, y, r)) != CDC_OK) return st;
+        double norms[3] = {0.0, 0.0, 0.0}; /* |b|^2, |r|^2, r.z */
         for (size_t c = 0; c < nc; ++c) {
             const double b = m->cell_volumes[c] / dtau * x[c];
-            bnorm += b * b;
-            rnorm += r[c] * r[c];
+            norms[0] += b * b;
+            norms[1] += r[c] * r[c];
             p[c] = r[c] / diag[c];
-            rz += r[c] * p[c];
+            norms[2] += r[c] * p[c];
         }
-        bnorm = sqrt(bnorm);
+        if ((st = global_sum(ctx, norms, 3)) != CDC_OK) return st;
+        const double bnorm = sqrt(norms[0]);
+        double rnorm = norms[1], rz = norms[2];
         int it = 0;
         while (sqrt(rnorm) > tol * bnorm) {
             if (++it > max_it)
                 return cdc_fail(ctx, CDC_ERR_NOT_CONVERGED,
                                 "diffusion: CG did not reach tolerance %g in %d iterations (relative residual %g)",
                                 tol, max_it, sqrt(rnorm) / bnorm);
-            laplacian(m, a, p, q);
+            if ((st = laplacian(ctx, a, p, q)) != CDC_OK) return st;
             double pAp = 0.0;
             for (size_t c = 0; c < nc; ++c) {
                 q[c] = m->cell_volumes[c] / dtau * p[c] - q[c];
                 pAp += p[c] * q[c];
             }
+            if ((st = global_sum(ctx, &pAp, 1)) != CDC_OK) return st;
             const double alpha = rz / pAp;
-            double rz_new = 0.0;
-            rnorm = 0.0;
+            double sums[2] = {0.0, 0.0}; /* |r|^2, r.z */
             for (size_t c = 0; c < nc; ++c) {
                 y[c] += alpha * p[c];
                 r[c] -= alpha * q[c];
-                rnorm += r[c] * r[c];
-                rz_new += r[c] * r[c] / diag[c];
+                sums[0] += r[c] * r[c];
+                sums[1] += r[c] * r[c] / diag[c];
             }
-            const double beta = rz_new / rz;
-            rz = rz_new;
+            if ((st = global_sum(ctx, sums, 2)) != CDC_OK) return st;
+            rnorm = sums[0];
+            const double beta = sums[1] / rz;
+            rz = sums[1];
             for (size_t c = 0; c < nc; ++c) p[c] = r[c] / diag[c] + beta * p[c];
         }
         /* Flux-form update from the implicit solution: conserves sum(x V) exactly. */
-        laplacian(m, a, y, q);
+        if ((st = laplacian(ctx, a, y, q)) != CDC_OK) return st;
         for (size_t c = 0; c < nc; ++c) x[c] += dtau / m->cell_volumes[c] * q[c];
     }
     memcpy(phi, x, nc * sizeof *phi);

@@ -80,6 +80,11 @@ struct cdc_context {
     double *face_coeff;
     cdc_dvec scratch[CDC_N_SCRATCH];
     cdc_dvec class_q, class_field, class_sum; /* size-aware smoothing */
+
+    /* processor faces and the caller's exchange (parallel diffusion); has_halo 0: serial */
+    int has_halo;
+    cdc_halo halo;
+    cdc_dvec halo_coeff, halo_nbr;
 };
 
 /* Set the context's message (printf style); returns status for one-line error returns. */

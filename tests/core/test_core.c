@@ -690,6 +690,92 @@ static void test_diffusion(void)
     cube_case_close(&t);
 }
 
+/* A halo that joins the xmin and xmax faces of one box (periodic in x): the same callbacks a rank of
+ * a decomposed case gets, here with the "neighbour rank" being the other end of the box. */
+typedef struct { const box_mesh *b; int calls; } periodic_halo;
+
+static int periodic_exchange(void *user, const double *x, double *nbr)
+{
+    periodic_halo *h = user;
+    const box_mesh *b = h->b;
+    int32_t f = 0;
+    for (int k = 0; k < b->nz; ++k)
+        for (int j = 0; j < b->ny; ++j) {
+            nbr[f++] = x[box_mesh_cell(b, b->nx - 1, j, k)]; /* across xmin */
+            nbr[f++] = x[box_mesh_cell(b, 0, j, k)];         /* across xmax */
+        }
+    ++h->calls;
+    return 0;
+}
+
+static int one_rank_sum(void *user, double *values, int n)
+{
+    (void)user; (void)values; (void)n;
+    return 0;
+}
+
+static void test_diffusion_halo(void)
+{
+    enum { NX = 20, NY = 3, NZ = 3 };
+    cube_case t;
+    if (cube_case_open(&t, NX, NY, NZ)) return;
+    const size_t nc = (size_t)t.b.mesh.n_cells;
+    int32_t cells[2 * NY * NZ];
+    double coeff[2 * NY * NZ], vol[2 * NY * NZ];
+    int32_t f = 0;
+    for (int k = 0; k < NZ; ++k)
+        for (int j = 0; j < NY; ++j) {
+            cells[f] = box_mesh_cell(&t.b, 0, j, k);
+            cells[f + 1] = box_mesh_cell(&t.b, NX - 1, j, k);
+            for (int s = 0; s < 2; ++s) {
+                coeff[f + s] = CUBE_DX * CUBE_DX / CUBE_DX; /* |S_f| / distance between the cell centres */
+                vol[f + s] = t.b.mesh.cell_volumes[0];
+            }
+            f += 2;
+        }
+    periodic_halo ph = {&t.b, 0};
+    const cdc_halo h = {f, cells, coeff, vol, periodic_exchange, one_rank_sum, &ph};
+    CHECK(cdc_context_set_halo(t.ctx, &h) == CDC_OK, "set halo: %s", cdc_last_error(t.ctx));
+    /* a unit source next to the xmin wall and one in the middle: periodic, so the results must be
+     * translations of each other (to the CG tolerance); the wall no longer reflects the first */
+    double *a = calloc(nc, sizeof(double)), *m = calloc(nc, sizeof(double));
+    const double V = t.b.mesh.cell_volumes[0];
+    a[box_mesh_cell(&t.b, 0, 1, 1)] = 1.0 / V;
+    m[box_mesh_cell(&t.b, NX / 2, 1, 1)] = 1.0 / V;
+    cdc_diffusion_params prm = {0};
+    prm.bandwidth = 4 * CUBE_DX;
+    prm.tolerance = 1e-13;
+    CHECK(cdc_diffuse(t.ctx, &prm, a) == CDC_OK && cdc_diffuse(t.ctx, &prm, m) == CDC_OK, "diffuse: %s",
+          cdc_last_error(t.ctx));
+    double worst = 0, peak = 0, total = 0;
+    for (int k = 0; k < NZ; ++k)
+        for (int j = 0; j < NY; ++j)
+            for (int i = 0; i < NX; ++i) {
+                const double va = a[box_mesh_cell(&t.b, i, j, k)];
+                worst = fmax(worst, fabs(va - m[box_mesh_cell(&t.b, (i + NX / 2) % NX, j, k)]));
+                peak = fmax(peak, va);
+                total += va * V;
+            }
+    CHECK(ph.calls > 0, "the halo exchange was never called");
+    CHECK(worst <= 1e-9 * peak, "periodic diffusion: wall source vs middle source differ by %.2e of the peak",
+          worst / peak);
+    CHECK(fabs(total - 1) <= 1e-13, "conservation through the halo %.2e", fabs(total - 1));
+    /* without the halo the wall is zero-flux: the wall source's result is no translation */
+    CHECK(cdc_context_set_halo(t.ctx, NULL) == CDC_OK, "clear halo");
+    memset(a, 0, nc * sizeof *a);
+    a[box_mesh_cell(&t.b, 0, 1, 1)] = 1.0 / V;
+    CHECK(cdc_diffuse(t.ctx, &prm, a) == CDC_OK, "diffuse without halo");
+    CHECK(fabs(a[box_mesh_cell(&t.b, 0, 1, 1)] - m[box_mesh_cell(&t.b, NX / 2, 1, 1)]) > 1e-3 * peak,
+          "without the halo the wall source should differ from the periodic result");
+    /* bad halo input is refused with a message */
+    cdc_halo bad = h;
+    bad.exchange = NULL;
+    CHECK(cdc_context_set_halo(t.ctx, &bad) == CDC_ERR_ARGUMENT, "halo without exchange accepted");
+    free(a);
+    free(m);
+    cube_case_close(&t);
+}
+
 static void test_size_aware_diffusion(void)
 {
     cube_case t;
@@ -999,6 +1085,7 @@ int main(void)
     run("mirror_symmetry", test_mirror_symmetry);
     run("wall_mirror_flat", test_wall_mirror_flat);
     run("diffusion", test_diffusion);
+    run("diffusion_halo", test_diffusion_halo);
     run("size_aware_diffusion", test_size_aware_diffusion);
     run("limiter", test_limiter);
     run("parallel_matches_serial", test_parallel_matches_serial);

@@ -66,6 +66,63 @@ Foam::coarseDemMesh::coarseDemMesh(const fvMesh& mesh)
             << "mesh " << mesh.polyMesh::path() << ": " << cdc_create_error() << nl
             << "    (check the mesh with checkMesh)" << exit(FatalError);
     }
+    if (Pstream::parRun()) setHalo();
+}
+
+void Foam::coarseDemMesh::setHalo()
+{
+    haloField_.reset
+    (
+        new volScalarField
+        (
+            IOobject("coarseDemHalo", mesh_.time().timeName(), mesh_, IOobject::NO_READ, IOobject::NO_WRITE, false),
+            mesh_, dimensionedScalar(dimless, Zero)
+        )
+    );
+    for (const fvPatch& fp : mesh_.boundary())
+    {
+        if (!isA<processorPolyPatch>(fp.patch())) continue;
+        // delta(): from this cell's centre to the neighbour rank's cell centre
+        const vectorField d(fp.delta());
+        const scalarField magSf(fp.magSf());
+        forAll(fp, i)
+        {
+            haloCells_.push_back(fp.faceCells()[i]);
+            haloCoeff_.push_back(magSf[i]/mag(d[i]));
+        }
+    }
+    haloNbrVolume_.resize(haloCells_.size());
+    exchange(mesh_.V().cdata(), haloNbrVolume_.data());
+
+    cdc_halo h = {int32_t(haloCells_.size()), haloCells_.data(), haloCoeff_.data(), haloNbrVolume_.data(),
+                  &haloExchange, &haloSum, this};
+    check(cdc_context_set_halo(ctx_, &h), "processor faces for the diffusion smoothing");
+}
+
+void Foam::coarseDemMesh::exchange(const double* cellValues, double* nbr)
+{
+    volScalarField& f = *haloField_;
+    std::copy(cellValues, cellValues + mesh_.nCells(), f.primitiveFieldRef().begin());
+    f.correctBoundaryConditions();   // processor patches receive the neighbours' cell values
+    size_t k = 0;
+    for (const fvPatch& fp : mesh_.boundary())
+    {
+        if (!isA<processorPolyPatch>(fp.patch())) continue;
+        const fvPatchScalarField& pf = f.boundaryField()[fp.index()];
+        forAll(pf, i) nbr[k++] = pf[i];
+    }
+}
+
+int Foam::coarseDemMesh::haloExchange(void* self, const double* cellValues, double* nbr)
+{
+    static_cast<coarseDemMesh*>(self)->exchange(cellValues, nbr);
+    return 0;
+}
+
+int Foam::coarseDemMesh::haloSum(void*, double* values, int n)
+{
+    for (int i = 0; i < n; ++i) reduce(values[i], sumOp<scalar>());
+    return 0;
 }
 
 Foam::coarseDemMesh::~coarseDemMesh()

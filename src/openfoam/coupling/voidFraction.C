@@ -134,14 +134,14 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
             << "unknown smoothingModel " << sm << " in " << dict.name() << nl
             << "    valid smoothing models: off, diffusion, sizeAwareDiffusion" << exit(FatalIOError);
     }
-    if (smoothing_ != smoothing::off && Pstream::parRun())
+    if (smoothing_ == smoothing::sizeAware && Pstream::parRun())
     {
-        // The core diffuses on one rank's cells with zero flux through processor faces: the
-        // smoothing would stop at every processor boundary and differ from the serial run's.
+        // Each rank would form its own diameter classes from its particles (different classes,
+        // bandwidths and numbers of diffusion solves per rank): not the serial smoothing.
         FatalIOErrorInFunction(dict)
             << "smoothingModel " << sm << " in " << dict.name() << " runs in serial only: the"
-            << " diffusion has no halo exchange, so it would stop at the processor boundaries" << nl
-            << "    run serial, or use a kernel of similar width (gaussian) in parallel"
+            << " diameter classes are formed per rank" << nl
+            << "    run serial, or use smoothingModel diffusion (parallel) or a kernel method"
             << exit(FatalIOError);
     }
 }

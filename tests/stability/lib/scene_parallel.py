@@ -10,6 +10,9 @@
         A fluidized run: the np = 2 run's checks, particles straddling the boundary at the start and
         the number that crossed it during the run (must be > 0: the scene is about crossing), and
         the serial vs np = 2 differences at the end (measured, not asserted).
+    scene_parallel.py same-alpha <serial case> <np2 case> <scene>
+        As first-step, and the serial and np = 2 alpha_f must agree to 1e-9 (diffusion smoothing
+        across the processor boundary: the ranks solve the serial system, to the CG tolerance).
     scene_parallel.py refused - <np2 case> <scene> [message]
         The np = 2 run must stop with the message (default: the decomposition mismatch).
 """
@@ -20,6 +23,7 @@ import stablib
 
 
 DECOMPOSITION_MISMATCH = "must split the domain at the same planes"
+SAME_ALPHA_TOL = 1e-9
 
 
 def refused(par, scene, cause=DECOMPOSITION_MISMATCH):
@@ -53,9 +57,13 @@ def main():
         a_s = stablib.read_scalar_field(serial, t, "alpha")
         # np = 2 fields are per processor: compare in serial cell order after reconstructPar
         a_p = reconstructed(par, t, "alpha")
+        diff = None
         if a_p is not None and len(a_p) == len(a_s):
             diff = max(abs(x - y) for x, y in zip(a_s, a_p))
             parts.append("serial vs np=2 at t=%s: max |d alpha_f| %.2e" % (t, diff))
+        if mode == "same-alpha" and not (diff is not None and diff <= SAME_ALPHA_TOL):
+            ok = False
+            parts.append("alpha_f differs from serial by more than %g" % SAME_ALPHA_TOL)
         cl_s, cl_p = stablib.coupling_lines(serial), stablib.coupling_lines(par)
         if cl_s and cl_p:
             parts.append("solid volume in cells serial %.12e np=2 %.12e" % (cl_s[-1]["vc"], cl_p[-1]["vc"]))
@@ -65,7 +73,7 @@ def main():
         first = d[steps[0]]
         straddle = sum(1 for r in first.values() if abs(r[0] - W / 2) < r[6])
         parts.append("%d particles straddle x = %.4g m at the start" % (straddle, W / 2))
-        if mode == "first-step" and straddle == 0:
+        if mode in ("first-step", "same-alpha") and straddle == 0:
             ok = False
             parts.append("no particle straddles the processor boundary")
         if mode == "run":
