@@ -354,18 +354,7 @@ void coarseDemCoupling::couple
     state_.d = diameter_.data();
     state_.volume = volume_.data();
     sampleFluid(U, alpha, p, nuEff, DUDt);
-    if (needs_ & forceModel::needDvDt)
-    {
-        state_.dvdt.setSize(n);
-        const scalar dt = mesh_.time().deltaTValue();
-        for (label i = 0; i < n; ++i)
-        {
-            const auto iter = previousVelocity_.cfind(label(particles_.id[i]));
-            state_.dvdt[i] = iter.found() ? (state_.v[i] - *iter)/dt : Zero;
-        }
-        previousVelocity_.clear();
-        for (label i = 0; i < n; ++i) previousVelocity_.set(label(particles_.id[i]), state_.v[i]);
-    }
+    if (needs_ & forceModel::needDvDt) particleAccelerations();
 
     K_.setSize(n);
     K_ = 0;
@@ -495,6 +484,57 @@ void coarseDemCoupling::couple
     checkExplicitRange(alpha);
 }
 
+void coarseDemCoupling::particleAccelerations()
+{
+    const label n = particles_.size();
+    const scalar dt = mesh_.time().deltaTValue();
+    Map<vector> current(2*n);
+    for (label i = 0; i < n; ++i) current.set(label(particles_.id[i]), state_.v[i]);
+    if (Pstream::parRun())
+    {
+        // A particle that changed rank since the last coupling left its velocity on the old rank:
+        // every rank shares the velocities of its particles that are gone (few: those that crossed).
+        List<labelList> goneIds(Pstream::nProcs());
+        List<vectorField> goneVelocities(Pstream::nProcs());
+        DynamicList<label> ids;
+        DynamicList<vector> velocities;
+        forAllConstIters(previousVelocity_, iter)
+        {
+            if (!current.found(iter.key()))
+            {
+                ids.append(iter.key());
+                velocities.append(iter.val());
+            }
+        }
+        goneIds[Pstream::myProcNo()] = ids;
+        goneVelocities[Pstream::myProcNo()] = velocities;
+        Pstream::gatherList(goneIds);
+        Pstream::scatterList(goneIds);
+        Pstream::gatherList(goneVelocities);
+        Pstream::scatterList(goneVelocities);
+        forAll(goneIds, proci)
+        {
+            if (proci == Pstream::myProcNo()) continue;
+            forAll(goneIds[proci], k)
+            {
+                if (current.found(goneIds[proci][k])) previousVelocity_.set(goneIds[proci][k], goneVelocities[proci][k]);
+            }
+        }
+    }
+    state_.dvdt.setSize(n);
+    label nNew = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const auto iter = previousVelocity_.cfind(label(particles_.id[i]));
+        state_.dvdt[i] = iter.found() ? (state_.v[i] - *iter)/dt : Zero;
+        if (!iter.found()) ++nNew;
+    }
+    reduce(nNew, sumOp<label>());
+    if (firstDvDt_ < 0) firstDvDt_ = nNew;
+    else unknownDvDt_ += nNew;
+    previousVelocity_.transfer(current);
+}
+
 void coarseDemCoupling::checkParticleCount()
 {
     // LIGGGHTS deletes particles that leave its box (boundary f) and may only say so at its next
@@ -585,6 +625,13 @@ void coarseDemCoupling::report(Ostream& os) const
         << ", limiter moved " << returnReduce(voidFraction_.movedVolume(), sumOp<scalar>()) << " m3 in "
         << returnReduce(voidFraction_.nLimitedCells(), sumOp<label>()) << " cells"
         << ", drag dt K/m max " << particleDragRatio_ << " (" << nParticlesBeyond_ << " particles > 1)";
+    if (needs_ & forceModel::needDvDt)
+    {
+        // particles without a velocity of the last coupling (at the start or restart: all; later:
+        // inserted ones) get dv/dt = 0 for that step
+        os  << ", dv/dt unknown for " << firstDvDt_ << " particles at the first coupling, "
+            << unknownDvDt_ << " since";
+    }
     if (!implicitDrag_)
     {
         os  << ", explicit fluid drag dt Ksl/alpha max " << fluidDragRatio_ << " (" << nCellsBeyond_

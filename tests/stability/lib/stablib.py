@@ -159,6 +159,17 @@ PARTICLE_SIDE_WARNING = "explicit particle-side coupling beyond its range"
 FLUID_SIDE_WARNING = "explicit fluid drag beyond its range"
 
 
+def dvdt_unknown(case, log="log.coarseDemFoam"):
+    """(at the first coupling, since) of the last "dv/dt unknown" report, or None without one."""
+    last = None
+    with open(os.path.join(case, log), errors="replace") as f:
+        for line in f:
+            m = re.search(r"dv/dt unknown for (\d+) particles at the first coupling, (\d+) since", line)
+            if m:
+                last = (int(m.group(1)), int(m.group(2)))
+    return last
+
+
 def log_has(case, text, log="log.coarseDemFoam"):
     with open(os.path.join(case, log), errors="replace") as f:
         return any(text in line for line in f)
