@@ -23,9 +23,30 @@ means (mean over the profile's points) is written to profiles_info.txt and a war
 are not used, and the info says how many.
 Writes <case>/results/profile_voidfraction_z<h>mm.csv and profile_vz_z<h>mm.csv (x_m = distance
 from the left wall, value, sem) and results/profiles_info.txt. Samples from restarted runs (the
-same time written twice) are counted once.
+same time written twice, or the stretch between a stopped run's last write and its stop sampled
+again by the continued run) are counted once (drop_superseded).
 """
 import csv, glob, math, os, re, sys
+
+def drop_superseded(dirs):
+    """A run stopped after its last write and continued from it samples that stretch of time again,
+    at instants shifted by up to a CFD step (a function object counts its interval from the run's
+    start). Both samples stay on disk; the stopped segment's are from an abandoned trajectory. Of two
+    samples closer than half the usual spacing the one written later is kept. Returns (the kept
+    {time: dir}, the dropped times)."""
+    ts = sorted(dirs)
+    if len(ts) < 3:
+        return dirs, []
+    gaps = sorted(b - a for a, b in zip(ts, ts[1:]))
+    half = 0.5 * gaps[len(gaps) // 2]
+    kept, dropped = dict(dirs), []
+    for a, b in zip(ts, ts[1:]):
+        if a in kept and b in kept and b - a < half:
+            old = a if os.path.getmtime(dirs[a]) <= os.path.getmtime(dirs[b]) else b
+            del kept[old]
+            dropped.append(old)
+    return kept, sorted(dropped)
+
 
 def read_set(path):
     with open(path) as f:
@@ -45,18 +66,19 @@ def main():
         i = args.index("--min-batch"); min_batch = int(args[i + 1]); del args[i:i + 2]
     case, t0, t1 = args[0], float(args[1]), float(args[2])
     base = os.path.join(case, "postProcessing", "profiles")
-    times = sorted({float(os.path.basename(d)) for d in glob.glob(os.path.join(base, "*"))})
-    times = [t for t in times if t0 < t <= t1 + 1e-9]
+    dirs = {float(os.path.basename(d)): d for d in glob.glob(os.path.join(base, "*"))}
+    dirs, superseded = drop_superseded(dirs)
+    times = sorted(t for t in dirs if t0 < t <= t1 + 1e-9)
     if not times:
         sys.exit(f"profiles.py: no samples in ({t0}, {t1}] under {base}")
+    dropped = [t for t in superseded if t0 < t <= t1 + 1e-9]
+    if dropped:
+        print(f"profiles.py: {len(dropped)} sample(s) of a stopped segment superseded by the continued run "
+              f"and not used: t = {', '.join('%g' % t for t in dropped)}")
     # per set: list over time of (y, alpha, alphaP, UsZ*alphaP)
     series = {}
     for t in times:
-        d = None
-        for cand in glob.glob(os.path.join(base, "*")):
-            if abs(float(os.path.basename(cand)) - t) < 1e-9:
-                d = cand
-        for path in glob.glob(os.path.join(d, "z*.csv")):
+        for path in glob.glob(os.path.join(dirs[t], "z*.csv")):
             name = os.path.basename(path)
             setname = name.split("_")[0]
             header, rows = read_set(path)
@@ -130,6 +152,9 @@ def main():
             if c > 0.3:
                 print(f"profiles.py: warning: z = {h} mm {k}: batch means correlated ({c:.2f} > 0.3), "
                       "the SEM is too small (a slow circulation: a longer window or longer batches)")
+    if dropped:
+        info.append(f"{len(dropped)} sample(s) of a stopped segment, superseded by the continued run, not used: "
+                    + ", ".join("%g" % t for t in dropped))
     with open(os.path.join(case, "results", "profiles_info.txt"), "w") as f:
         f.write("\n".join(info) + "\n")
     print("\n".join(info))
