@@ -17,20 +17,36 @@ import csv, glob, os, re, shutil, sys
 def log_segments(log):
     """Per start of the solver (a log continued after a restart holds several, each beginning with
     OpenFOAM's "Create time"): its last stage-timer line (the timers count from each start) and its
-    last ClockTime (wall seconds since that start). Segments cut by a kill are counted up to their
-    last step, which wall_seconds.txt (written when the solver returns) would miss."""
-    segs = []
+    wall seconds. The wall clock is read at every step: coarseDemFoam's "Progress: t = T s ...,
+    wall W s", DPMFoam's "Time = T" then "ClockTime = W". A start that was stopped and continued
+    from its last write is counted up to the time the continuation started from: the stretch after
+    it was computed again (and is counted there). Its stage timers were last printed at that write,
+    so they cover the same stretch."""
+    segs, t = [], None
     for line in open(log, errors="replace"):
         if line.startswith("Create time"):
-            segs.append({"stages": None, "clock": 0.0})
+            segs.append({"stages": None, "walls": []})
+            t = None
         elif not segs:
             continue
         elif line.startswith("Stage timers"):
             segs[-1]["stages"] = {m.group(1): float(m.group(2)) for m in re.finditer(r"(\w+) ([0-9.eE+-]+) \(", line)}
+        elif line.startswith("Time = "):
+            t = float(line.split()[2])
         else:
+            m = re.match(r"Progress: t = ([0-9.eE+-]+) s .* wall ([0-9.eE+-]+) s", line)
+            if m:
+                segs[-1]["walls"].append((float(m.group(1)), float(m.group(2))))
+                continue
             m = re.search(r"ClockTime = ([0-9.eE+-]+)", line)
             if m:
-                segs[-1]["clock"] = float(m.group(1))
+                segs[-1]["walls"].append((t if t is not None else float("inf"), float(m.group(1))))
+    for k, seg in enumerate(segs):
+        walls = seg["walls"]
+        restart = segs[k + 1]["walls"][0][0] if k + 1 < len(segs) and segs[k + 1]["walls"] else None
+        if restart is not None:
+            walls = [w for w in walls if w[0] < restart] or walls[:1]
+        seg["clock"] = max((w[1] for w in walls), default=0.0)
     return segs
 
 def stage_times(segs):
