@@ -9,7 +9,8 @@ wall_seconds.txt, summed over restarts) and the coupling share of it from the so
 (locate, kernel, smoothing incl. the packing limiter, forces, exchange over all stages; each
 start's last line, summed). Copies each run's
 profile CSVs and comparison plots to <out>/<run>_<commit>/ (runs of one model at different commits
-side by side) and writes <out>/error_vs_runtime.{csv,md,png}. Where a run also has the binned
+side by side) and writes <out>/error_vs_runtime.{csv,md,png}; the PNG labels each model's last run
+on the command line (give the runs oldest first) and shows its earlier runs as grey circles. Where a run also has the binned
 particle velocity (profile_vzbinned, binnedParticleFields on), its error is a further column.
 """
 import csv, glob, os, re, shutil, sys
@@ -137,23 +138,31 @@ def main():
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        # rows: gas fraction at 16.4 mm, particle v_z at 15 mm; columns: wall time, coupling share
+        # rows: gas fraction at 16.4 mm, particle v_z at 15 mm; columns: wall time, coupling share.
+        # One labelled point per model (its last run on the command line), earlier runs in grey.
+        latest = {r["model"]: r for r in rows}
         fig, ax = plt.subplots(2, 2, figsize=(10, 8))
         for i, (key, sem, label) in enumerate((("void_rms", "void_sem", "gas fraction RMS error, z = 16.4 mm"),
                                                ("vz_rms", "vz_sem", "particle v_z RMS error, z = 15 mm (m/s)"))):
             for r in rows:
+                current = latest[r["model"]] is r
                 for j, x in enumerate((r["core"], 100 * r["coupling_share"])):
                     if x != x:
                         continue   # no stage timers (the DPMFoam baseline): no coupling share
-                    ax[i][j].errorbar(x, r[key], yerr=r[sem], fmt="o", capsize=3)
-                    ax[i][j].annotate(f"{r['model']} {r['commit']}", (x, r[key]), textcoords="offset points", xytext=(4, 4))
+                    if current:
+                        ax[i][j].errorbar(x, r[key], yerr=r[sem], fmt="o", capsize=3, label=f"{r['model']} ({r['commit']})")
+                        ax[i][j].annotate(r["model"], (x, r[key]), textcoords="offset points", xytext=(4, 4))
+                    else:
+                        ax[i][j].plot(x, r[key], "o", mfc="none", color="0.6", ms=5)
             ax[i][0].set_ylabel(label)
             ax[i][1].set_ylabel(label)
             ax[i][0].set_xlabel("run time (core-seconds: wall x MPI ranks)")
             ax[i][1].set_xlabel("coupling share of the wall time (%)")
             for a in ax[i]:
                 a.axhline(0.05, color="grey", lw=0.8, ls="--")
-        fig.suptitle("Mueller bed: error against run time (error bars: mean batch SEM of the simulation)")
+        ax[0][0].legend(fontsize=8, loc="upper right")
+        fig.suptitle("Mueller bed: error against run time (error bars: mean batch SEM of the simulation;\n"
+                     "each model's last run as given to summary.py; grey circles: its earlier runs, see the table)")
         fig.tight_layout()
         fig.savefig(os.path.join(out, "error_vs_runtime.png"), dpi=110)
     except ImportError:
