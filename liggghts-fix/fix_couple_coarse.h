@@ -20,7 +20,10 @@ Syntax:
      apply value = yes or no
        yes = add the stored coupling force to each particle every time step (default)
        no  = store the forces (for total_force() and the fix output) but do not add
-             them to the particles (one-way coupling, diagnostics)
+             them to the particles: they move as in a DEM-only run while the CFD side
+             still applies the reaction to the fluid (a diagnostic, e.g. to see what the
+             fluid does to a bed held by the DEM alone; not one-way coupling, which
+             would leave the fluid without the reaction)
      check_order value = yes or no
        yes = push_forces() verifies that the local particles are still those of the
              last pull(), in the same order, and stops with an error otherwise (default)
