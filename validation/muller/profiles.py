@@ -39,12 +39,26 @@ def drop_superseded(dirs):
         return dirs, []
     gaps = sorted(b - a for a, b in zip(ts, ts[1:]))
     half = 0.5 * gaps[len(gaps) // 2]
-    kept, dropped = dict(dirs), []
+    # groups of consecutive samples closer than half a spacing (several stops over one stretch)
+    groups = [[ts[0]]]
     for a, b in zip(ts, ts[1:]):
-        if a in kept and b in kept and b - a < half:
-            old = a if os.path.getmtime(dirs[a]) <= os.path.getmtime(dirs[b]) else b
-            del kept[old]
-            dropped.append(old)
+        if b - a < half:
+            groups[-1].append(b)
+        else:
+            groups.append([b])
+    kept, dropped = dict(dirs), []
+    for g in groups:
+        if len(g) < 2:
+            continue
+        mtimes = [os.path.getmtime(dirs[t]) for t in g]
+        if len(set(mtimes)) < len(mtimes):
+            print(f"profiles.py: warning: samples {', '.join('%g' % t for t in g)} have equal file times "
+                  "(copied without them?): the later time is kept")
+        newest = max(range(len(g)), key=lambda i: (mtimes[i], g[i]))
+        for i, t in enumerate(g):
+            if i != newest:
+                del kept[t]
+                dropped.append(t)
     return kept, sorted(dropped)
 
 

@@ -42,12 +42,14 @@ def log_segments(log):
             m = re.search(r"ClockTime = ([0-9.eE+-]+)", line)
             if m:
                 segs[-1]["walls"].append((t if t is not None else float("inf"), float(m.group(1))))
-    for k, seg in enumerate(segs):
-        walls = seg["walls"]
-        restart = segs[k + 1]["walls"][0][0] if k + 1 < len(segs) and segs[k + 1]["walls"] else None
-        if restart is not None:
-            walls = [w for w in walls if w[0] < restart] or walls[:1]
+    # each segment counts up to the earliest time any later segment started from (a start that
+    # failed before its first step has no wall entries and cuts nothing)
+    restart = float("inf")
+    for seg in reversed(segs):
+        walls = [w for w in seg["walls"] if w[0] < restart]
         seg["clock"] = max((w[1] for w in walls), default=0.0)
+        if seg["walls"]:
+            restart = min(restart, seg["walls"][0][0])
     return segs
 
 def stage_times(segs):
