@@ -195,11 +195,12 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
 typedef struct cdc_halo {
     int32_t n_faces;
     const int32_t *cell;       /* this rank's cell next to each processor face */
-    const double *coeff;       /* |S_f| / |C_N - C_P|, C_N the neighbour rank's cell centre */
+    const double *coeff;       /* |S_f| / |C_N - C_P|, C_N the neighbour rank's cell centre; the
+                                  same bits on both sides of a face for exact conservation */
     const double *nbr_volume;  /* volume of the neighbour rank's cell (for the D rule) */
     /* nbr[i] = the neighbour rank's value of its cell across face i, given this rank's cell values */
     int (*exchange)(void *user, const double *cell_values, double *nbr);
-    /* values[0..n) summed over all ranks, in place */
+    /* values[0..n) summed over all ranks, in place, with the same result bits on every rank */
     int (*sum)(void *user, double *values, int n);
     void *user;                /* passed to the callbacks */
 } cdc_halo;

@@ -17,7 +17,10 @@
  * are zero-flux; with one, each processor face carries the same two-point flux with the neighbour
  * rank's value from the caller's exchange, and the CG's dot products are summed over the ranks, so
  * the ranks solve the serial system together. Both sides of a processor face compute the same flux
- * from the same exchanged values, so the flux-form update conserves the total over all ranks.
+ * from the same exchanged values (given the same coefficient on both sides, which the caller
+ * ensures), so the flux-form update conserves the total over all ranks. The global sums must give
+ * every rank the same bits: the CG's stopping test, and so the number of collective exchanges,
+ * depends on them.
  */
 #include "internal.h"
 

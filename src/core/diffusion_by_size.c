@@ -29,6 +29,9 @@ cdc_status cdc_alpha_p_diffused_by_size(cdc_context *ctx, const cdc_kernels *k, 
     if (!(class_ratio > 1.0))
         return cdc_fail(ctx, CDC_ERR_ARGUMENT, "size-aware diffusion: class ratio %g is invalid (must be > 1)",
                         class_ratio);
+    if (ctx->has_halo)
+        return cdc_fail(ctx, CDC_ERR_UNSUPPORTED,
+                        "size-aware diffusion: not across ranks (each rank would form its own diameter classes)");
     if (p->n != cdc_kernels_count(k))
         return cdc_fail(ctx, CDC_ERR_ARGUMENT, "size-aware diffusion: particle count differs from the kernels");
     const size_t nc = (size_t)ctx->mesh->n_cells, np = (size_t)p->n;

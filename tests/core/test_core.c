@@ -767,6 +767,17 @@ static void test_diffusion_halo(void)
     CHECK(cdc_diffuse(t.ctx, &prm, a) == CDC_OK, "diffuse without halo");
     CHECK(fabs(a[box_mesh_cell(&t.b, 0, 1, 1)] - m[box_mesh_cell(&t.b, NX / 2, 1, 1)]) > 1e-3 * peak,
           "without the halo the wall source should differ from the periodic result");
+    /* size-aware diffusion forms its classes per rank: refused across ranks */
+    CHECK(cdc_context_set_halo(t.ctx, &h) == CDC_OK, "set halo again");
+    double px[3] = {0.05, 0.015, 0.015}, pr[1] = {0.004};
+    cdc_particles p = {1, px, pr, NULL, NULL};
+    cdc_kernels *k = NULL;
+    cdc_diffusion_params base = {0};
+    int ncls = 0;
+    CHECK(cdc_kernels_create(t.ctx, "centre", NULL, &k) == CDC_OK && cdc_kernels_build(k, &p) == CDC_OK, "kernels");
+    CHECK(cdc_alpha_p_diffused_by_size(t.ctx, k, &p, 6.0, 1.1, &base, a, &ncls) == CDC_ERR_UNSUPPORTED,
+          "size-aware diffusion with a halo was not refused");
+    cdc_kernels_destroy(k);
     /* bad halo input is refused with a message */
     cdc_halo bad = h;
     bad.exchange = NULL;

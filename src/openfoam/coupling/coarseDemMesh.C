@@ -1,6 +1,7 @@
 #include "coarseDemMesh.H"
 #include "wallPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
 #include "symmetryPolyPatch.H"
 #include "symmetryPlanePolyPatch.H"
 
@@ -79,16 +80,29 @@ void Foam::coarseDemMesh::setHalo()
             mesh_, dimensionedScalar(dimless, Zero)
         )
     );
+    // The two sides compute |S_f| in different orders (the face is stored reversed), so it agrees
+    // only to round-off: each side uses the mean of both, and the flux leaving one rank is then
+    // bit for bit the flux entering the other (delta() is exactly opposite on the two sides).
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     for (const fvPatch& fp : mesh_.boundary())
     {
-        if (!isA<processorPolyPatch>(fp.patch())) continue;
+        if (!diffusesAcross(fp)) continue;
+        UOPstream toNbr(refCast<const processorPolyPatch>(fp.patch()).neighbProcNo(), buffers);
+        toNbr << fp.magSf();
+    }
+    buffers.finishedSends();
+    for (const fvPatch& fp : mesh_.boundary())
+    {
+        if (!diffusesAcross(fp)) continue;
+        UIPstream fromNbr(refCast<const processorPolyPatch>(fp.patch()).neighbProcNo(), buffers);
+        const scalarField nbrMagSf(fromNbr);
         // delta(): from this cell's centre to the neighbour rank's cell centre
         const vectorField d(fp.delta());
-        const scalarField magSf(fp.magSf());
+        const scalarField& magSf = fp.magSf();
         forAll(fp, i)
         {
             haloCells_.push_back(fp.faceCells()[i]);
-            haloCoeff_.push_back(magSf[i]/mag(d[i]));
+            haloCoeff_.push_back(0.5*(magSf[i] + nbrMagSf[i])/mag(d[i]));
         }
     }
     haloNbrVolume_.resize(haloCells_.size());
@@ -107,7 +121,7 @@ void Foam::coarseDemMesh::exchange(const double* cellValues, double* nbr)
     size_t k = 0;
     for (const fvPatch& fp : mesh_.boundary())
     {
-        if (!isA<processorPolyPatch>(fp.patch())) continue;
+        if (!diffusesAcross(fp)) continue;
         const fvPatchScalarField& pf = f.boundaryField()[fp.index()];
         forAll(pf, i) nbr[k++] = pf[i];
     }
@@ -119,9 +133,22 @@ int Foam::coarseDemMesh::haloExchange(void* self, const double* cellValues, doub
     return 0;
 }
 
+bool Foam::coarseDemMesh::diffusesAcross(const fvPatch& fp)
+{
+    // processor faces of the decomposition; processorCyclic ones (cyclic faces split between ranks)
+    // stay zero-flux, as cyclic faces are in serial
+    return isA<processorPolyPatch>(fp.patch()) && !isA<processorCyclicPolyPatch>(fp.patch());
+}
+
 int Foam::coarseDemMesh::haloSum(void*, double* values, int n)
 {
-    for (int i = 0; i < n; ++i) reduce(values[i], sumOp<scalar>());
+    // summed on the master and sent to all: every rank gets the same bits, so every rank's CG
+    // takes the same decisions (an allreduce need not give identical results on all ranks)
+    List<scalar> v(n);
+    std::copy(values, values + n, v.begin());
+    Pstream::listCombineGather(v, plusEqOp<scalar>());
+    Pstream::listCombineScatter(v);
+    std::copy(v.begin(), v.end(), values);
     return 0;
 }
 
