@@ -23,11 +23,14 @@ def log_segments(log):
     from its last write is counted up to the time the continuation started from: the stretch after
     it was computed again (and is counted there). Its stage timers were last printed at that write,
     so they cover the same stretch."""
-    segs, t = [], None
+    segs, t, nprocs = [], None, 1
     for line in open(log, errors="replace"):
-        if line.startswith("Create time"):
-            segs.append({"stages": None, "walls": []})
-            t = None
+        m = re.match(r"nProcs\s*:\s*(\d+)", line)   # in OpenFOAM's banner, before "Create time"
+        if m:
+            nprocs = int(m.group(1))
+        elif line.startswith("Create time"):
+            segs.append({"stages": None, "walls": [], "nprocs": nprocs})
+            t, nprocs = None, 1
         elif not segs:
             continue
         elif line.startswith("Stage timers"):
@@ -78,19 +81,21 @@ def main():
                 # (RMS, max, SEM, symmetrised RMS, noise-removed RMS); older files lack the last two
                 errs[(r["quantity"], r["z_mm"])] = tuple(float(r.get(k) or "nan") for k in (
                     "rms_error", "max_error", "mean_batch_sem", "rms_error_symmetrised", "rms_error_noise_removed"))
-        # wall_seconds.txt: one line per (re)start that returned, "<wall seconds> [<MPI ranks>]";
-        # the solver log has every start, also one cut by a kill: the larger sum is the wall time
+        # the solver log has every start, also one cut by a kill; wall_seconds.txt (one line per
+        # (re)start that returned, "<wall seconds> [<MPI ranks>]") only where there is no log
         wpath = os.path.join(run, "wall_seconds.txt")
         starts = [l.split() for l in open(wpath) if l.strip()] if os.path.exists(wpath) else []
         logs = [p for p in (os.path.join(run, "log.coarseDemFoam"), os.path.join(run, "log.DPMFoam")) if os.path.exists(p)]
         segs = log_segments(logs[0]) if logs else []
-        wall = max(sum(float(t[0]) for t in starts), sum(seg["clock"] for seg in segs))
-        rank_set = sorted(set(int(t[1]) if len(t) > 1 else 1 for t in starts)) or [1]
-        ranks = "/".join(str(r) for r in rank_set)
-        if len(rank_set) == 1:
-            core = wall * rank_set[0]
-        else:   # mixed rank counts: per start as recorded
+        if segs:   # every start, also one cut by a kill, with its MPI ranks (OpenFOAM's nProcs)
+            wall = sum(seg["clock"] for seg in segs)
+            core = sum(seg["clock"] * seg["nprocs"] for seg in segs)
+            rank_set = sorted(set(seg["nprocs"] for seg in segs))
+        else:
+            wall = sum(float(t[0]) for t in starts)
             core = sum(float(t[0]) * (int(t[1]) if len(t) > 1 else 1) for t in starts)
+            rank_set = sorted(set(int(t[1]) if len(t) > 1 else 1 for t in starts)) or [1]
+        ranks = "/".join(str(r) for r in rank_set)
         cpath = os.path.join(run, "commit.txt")
         commit = " ".join(sorted(set(l.strip() for l in open(cpath) if l.strip()))) if os.path.exists(cpath) else "unknown"
         st = stage_times(segs) or {}
