@@ -173,4 +173,5 @@ def main():
         f.write("\n".join(info) + "\n")
     print("\n".join(info))
 
-main()
+if __name__ == "__main__":
+    main()

@@ -49,7 +49,7 @@ def log_segments(log):
     # failed before its first step has no wall entries and cuts nothing)
     restart = float("inf")
     for seg in reversed(segs):
-        walls = [w for w in seg["walls"] if w[0] < restart]
+        walls = seg["walls"] if restart == float("inf") else [w for w in seg["walls"] if w[0] < restart]
         seg["clock"] = max((w[1] for w in walls), default=0.0)
         if seg["walls"]:
             restart = min(restart, seg["walls"][0][0])
@@ -177,4 +177,5 @@ def main():
     for r in rows:
         print(f"{r['run']}: wall {r['wall']:.0f} s x {r['ranks']} ranks, coupling {100*r['coupling_share']:.1f} %, void RMS {r['void_rms']:.4f}, vz RMS {r['vz_rms']:.4f}")
 
-main()
+if __name__ == "__main__":
+    main()
