@@ -85,10 +85,7 @@ def main():
     times = sorted(t for t in dirs if t0 < t <= t1 + 1e-9)
     if not times:
         sys.exit(f"profiles.py: no samples in ({t0}, {t1}] under {base}")
-    dropped = [t for t in superseded if t0 < t <= t1 + 1e-9]
-    if dropped:
-        print(f"profiles.py: {len(dropped)} sample(s) of a stopped segment superseded by the continued run "
-              f"and not used: t = {', '.join('%g' % t for t in dropped)}")
+    dropped = [t for t in superseded if t0 < t <= t1 + 1e-9]   # reported with the info at the end
     # per set: list over time of (y, alpha, alphaP, UsZ*alphaP)
     series = {}
     for t in times:
