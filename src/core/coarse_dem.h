@@ -185,12 +185,13 @@ typedef struct cdc_diffusion_params {
 
 cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double *phi);
 
-/* Processor faces of one rank's mesh, for diffusion across ranks. The core has no MPI: the caller
- * (one rank of a decomposed case) lists this rank's processor faces and supplies the halo exchange
- * and the global sum. With a halo set, cdc_diffuse couples the ranks through these faces (same
- * two-point flux as internal faces, CG with global dot products), so the smoothing equals the
+/* Processor faces of one rank's mesh, for the field operations across ranks. The core has no MPI:
+ * the caller (one rank of a decomposed case) lists this rank's processor faces and supplies the halo
+ * exchange and the global sum. With a halo set, cdc_diffuse couples the ranks through these faces
+ * (same two-point flux as internal faces, CG with global dot products), so the smoothing equals the
  * serial one to the solver tolerance and the total sum(phi V) over all ranks is conserved to
- * round-off. Every rank must call cdc_diffuse the same number of times (the callbacks are
+ * round-off; cdc_limit_packing moves excess volume across them as across internal faces. Every rank
+ * must call cdc_diffuse and cdc_limit_packing the same number of times (the callbacks are
  * collective). The arrays must outlive the context or the next cdc_context_set_halo. */
 typedef struct cdc_halo {
     int32_t n_faces;
@@ -218,7 +219,8 @@ cdc_status cdc_alpha_p_diffused_by_size(cdc_context *ctx, const cdc_kernels *k, 
 
 /* Packing limiter: where alpha_p exceeds alpha_max, the excess volume moves to face neighbours
  * (volume conserved exactly) until no cell exceeds alpha_max or max_sweeps is reached.
- * Reports the total moved volume (m^3) and the number of cells that were over the limit. */
+ * Reports the moved volume (m^3) and the number of cells that were over the limit; with a halo,
+ * the excess crosses processor faces too and the two reports are this rank's share. */
 cdc_status cdc_limit_packing(cdc_context *ctx, double alpha_max, int max_sweeps, double *alpha_p,
                              double *moved_volume, int32_t *n_limited_cells);
 

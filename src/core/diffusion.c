@@ -95,8 +95,9 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
 
     const cdc_mesh *m = ctx->mesh;
     const size_t nc = (size_t)m->n_cells, ni = (size_t)m->n_internal_faces;
-    for (int k = 0; k < CDC_N_SCRATCH; ++k)
-        if (cdc_dvec_reserve(&ctx->scratch[k], k == CDC_N_SCRATCH - 1 ? (ni > 0 ? ni : 1) : nc))
+    /* scratch 0..5 per cell, 6 per internal face */
+    for (int k = 0; k < 7; ++k)
+        if (cdc_dvec_reserve(&ctx->scratch[k], k == 6 ? (ni > 0 ? ni : 1) : nc))
             return cdc_fail(ctx, CDC_ERR_NOMEM, "diffusion: out of memory");
     double *x = ctx->scratch[0].v, *y = ctx->scratch[1].v, *r = ctx->scratch[2].v, *p = ctx->scratch[3].v,
            *q = ctx->scratch[4].v, *diag = ctx->scratch[5].v, *a = ctx->scratch[6].v;

@@ -40,7 +40,7 @@ void cdc_dvec_free(cdc_dvec *a);
 typedef struct { double origin[3]; double normal[3]; } cdc_plane;
 #define CDC_MAX_PLANES 6   /* the walls of a box; more distinct planes in reach is an error */
 #define CDC_MAX_IMAGES 64  /* mirror images of one particle (a box corner in a thin slab has ~8) */
-#define CDC_N_SCRATCH 7
+#define CDC_N_SCRATCH 8
 /* Relative slack on "within radius" tests: on regular lattices cell centres sit exactly on a
  * kernel's radius, and round-off must not decide (asymmetrically) whether they are in. */
 #define CDC_RADIUS_SLACK (1.0 + 1e-10)
@@ -85,6 +85,7 @@ struct cdc_context {
     int has_halo;
     cdc_halo halo;
     cdc_dvec halo_coeff, halo_nbr;
+    cdc_dvec halo_work;    /* packing limiter: the other side's values per processor face */
 };
 
 /* Set the context's message (printf style); returns status for one-line error returns. */

@@ -860,6 +860,79 @@ static void test_limiter(void)
 }
 
 
+/* The limiter across a periodic halo: an over-packed block at the xmin wall, whose excess must cross
+ * the halo into the cells at xmax, gives the translation of the same block in the middle of the box
+ * (to round-off); the total is conserved to round-off and no cell stays above the limit. */
+static void test_limiter_halo(void)
+{
+    enum { NX = 12, NY = 3, NZ = 3 };
+    cube_case t;
+    if (cube_case_open(&t, NX, NY, NZ)) return;
+    const size_t nc = (size_t)t.b.mesh.n_cells;
+    int32_t cells[2 * NY * NZ];
+    double coeff[2 * NY * NZ], vol[2 * NY * NZ];
+    int32_t f = 0;
+    for (int k = 0; k < NZ; ++k)
+        for (int j = 0; j < NY; ++j) {
+            cells[f] = box_mesh_cell(&t.b, 0, j, k);
+            cells[f + 1] = box_mesh_cell(&t.b, NX - 1, j, k);
+            for (int s = 0; s < 2; ++s) {
+                coeff[f + s] = CUBE_DX;
+                vol[f + s] = t.b.mesh.cell_volumes[0];
+            }
+            f += 2;
+        }
+    periodic_halo ph = {&t.b, 0};
+    const cdc_halo h = {f, cells, coeff, vol, periodic_exchange, one_rank_sum, &ph};
+    double *a = calloc(nc, sizeof(double)), *m = calloc(nc, sizeof(double)), *w = calloc(nc, sizeof(double));
+    /* a full slab two cells thick, up to 1.3: its excess cannot stay in its own layer */
+    for (int k = 0; k < NZ; ++k)
+        for (int j = 0; j < NY; ++j)
+            for (int i = 0; i < 2; ++i) {
+                const double v = 0.9 + 0.4 * ((i + j + k) % 2);
+                a[box_mesh_cell(&t.b, i, j, k)] = v;
+                m[box_mesh_cell(&t.b, i + NX / 2, j, k)] = v;
+            }
+    memcpy(w, a, nc * sizeof *w);
+    const double V = t.b.mesh.cell_volumes[0];
+    double before = 0;
+    for (size_t c = 0; c < nc; ++c) before += a[c] * V;
+    CHECK(cdc_context_set_halo(t.ctx, &h) == CDC_OK, "set halo: %s", cdc_last_error(t.ctx));
+    double moved = 0;
+    int32_t nlim = 0;
+    CHECK(cdc_limit_packing(t.ctx, 0.6, 200, a, &moved, &nlim) == CDC_OK &&
+              cdc_limit_packing(t.ctx, 0.6, 200, m, NULL, NULL) == CDC_OK,
+          "limit: %s", cdc_last_error(t.ctx));
+    double worst = 0, after = 0, mx = 0, across = 0;
+    for (int k = 0; k < NZ; ++k)
+        for (int j = 0; j < NY; ++j)
+            for (int i = 0; i < NX; ++i) {
+                const double va = a[box_mesh_cell(&t.b, i, j, k)];
+                worst = fmax(worst, fabs(va - m[box_mesh_cell(&t.b, (i + NX / 2) % NX, j, k)]));
+                after += va * V;
+                mx = fmax(mx, va);
+                if (i == NX - 1) across += va;
+            }
+    CHECK(ph.calls > 0, "the halo exchange was never called");
+    CHECK(across > 0, "no volume crossed the halo into the xmax cells");
+    CHECK(worst <= 1e-12, "periodic limiter: wall block vs middle block differ by %.2e", worst);
+    CHECK(fabs(after - before) <= 1e-14 * before, "conservation through the halo %.2e", fabs(after - before) / before);
+    CHECK(mx <= 0.6 * (1 + 1e-12), "max after limiting %.15g", mx);
+    CHECK(nlim == 2 * NY * NZ && moved > 0, "limited %d cells, moved %g", (int)nlim, moved);
+    printf("    periodic halo: wall vs middle block %.1e, conservation %.1e, %d exchanges\n", worst,
+           fabs(after - before) / before, ph.calls);
+    /* without the halo the wall is closed: the same block gives another field */
+    CHECK(cdc_context_set_halo(t.ctx, NULL) == CDC_OK, "clear halo");
+    CHECK(cdc_limit_packing(t.ctx, 0.6, 200, w, NULL, NULL) == CDC_OK, "limit without halo");
+    double diff = 0;
+    for (size_t c = 0; c < nc; ++c) diff = fmax(diff, fabs(w[c] - a[c]));
+    CHECK(diff > 1e-3, "without the halo the wall block should be limited differently (%.2e)", diff);
+    free(a);
+    free(m);
+    free(w);
+    cube_case_close(&t);
+}
+
 /* ------------------------------------------------------------------ parallel: ghosts give serial results */
 
 /* The box [0, 24dx] x [0, 10dx] x [0, 8dx] on one mesh (serial) and split at x = 12 dx into two
@@ -1099,6 +1172,7 @@ int main(void)
     run("diffusion_halo", test_diffusion_halo);
     run("size_aware_diffusion", test_size_aware_diffusion);
     run("limiter", test_limiter);
+    run("limiter_halo", test_limiter_halo);
     run("parallel_matches_serial", test_parallel_matches_serial);
     run("bad_input", test_bad_input);
     run("method_registry", test_method_registry);

@@ -110,7 +110,7 @@ void Foam::coarseDemMesh::setHalo()
 
     cdc_halo h = {int32_t(haloCells_.size()), haloCells_.data(), haloCoeff_.data(), haloNbrVolume_.data(),
                   &haloExchange, &haloSum, this};
-    check(cdc_context_set_halo(ctx_, &h), "processor faces for the diffusion smoothing");
+    check(cdc_context_set_halo(ctx_, &h), "processor faces for diffusion smoothing and the packing limiter");
 }
 
 void Foam::coarseDemMesh::exchange(const double* cellValues, double* nbr)

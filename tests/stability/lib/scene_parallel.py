@@ -15,6 +15,10 @@
     scene_parallel.py same-alpha <serial case> <np2 case> <scene>
         As first-step, and the serial and np = 2 alpha_f must agree to 1e-9 (diffusion smoothing
         across the processor boundary: the ranks solve the serial system, to the CG tolerance).
+    scene_parallel.py limited <serial case> <np2 case> <scene>
+        As same-alpha, and the packing limiter must have moved volume in both runs, the same volume
+        (to 1e-12) in the same number of cells: excess crosses the processor boundary as it crosses
+        any face.
     scene_parallel.py refused - <np2 case> <scene> [message]
         The np = 2 run must stop with the message (default: the decomposition mismatch).
 """
@@ -77,19 +81,29 @@ def main():
         if a_p is not None and len(a_p) == len(a_s):
             diff = max(abs(x - y) for x, y in zip(a_s, a_p))
             parts.append("serial vs np=2 at t=%s: max |d alpha_f| %.2e" % (t, diff))
-        if mode == "same-alpha" and not (diff is not None and diff <= SAME_ALPHA_TOL):
+        if mode in ("same-alpha", "limited") and not (diff is not None and diff <= SAME_ALPHA_TOL):
             ok = False
             parts.append("alpha_f differs from serial by more than %g" % SAME_ALPHA_TOL)
         cl_s, cl_p = stablib.coupling_lines(serial), stablib.coupling_lines(par)
         if cl_s and cl_p:
             parts.append("solid volume in cells serial %.12e np=2 %.12e" % (cl_s[-1]["vc"], cl_p[-1]["vc"]))
+            if mode == "limited":
+                ms, mp = cl_s[-1]["moved"], cl_p[-1]["moved"]
+                parts.append("limiter moved serial %.12e m3 in %d cells, np=2 %.12e m3 in %d cells"
+                             % (ms, cl_s[-1]["ncells"], mp, cl_p[-1]["ncells"]))
+                if not (ms > 0 and abs(ms - mp) <= 1e-12 * ms and cl_s[-1]["ncells"] == cl_p[-1]["ncells"]):
+                    ok = False
+                    parts.append("the limiter did not act the same in serial and np=2")
+        elif mode == "limited":
+            ok = False
+            parts.append("no coupling report line to read the limiter's work from")
     d = stablib.dumps(par)
     if d:
         steps = list(d)
         first = d[steps[0]]
         straddle = sum(1 for r in first.values() if abs(r[0] - W / 2) < r[6])
         parts.append("%d particles straddle x = %.4g m at the start" % (straddle, W / 2))
-        if mode in ("first-step", "same-alpha") and straddle == 0:
+        if mode in ("first-step", "same-alpha", "limited") and straddle == 0:
             ok = False
             parts.append("no particle straddles the processor boundary")
         if mode == "run":
