@@ -714,6 +714,25 @@ static int one_rank_sum(void *user, double *values, int n)
     return 0;
 }
 
+/* The faces of the periodic halo of a box: cells at xmin and xmax in the exchange's order; the face
+ * arrays need 2 ny nz entries each. */
+static cdc_halo periodic_halo_faces(const box_mesh *b, periodic_halo *ph, int32_t *cells, double *coeff, double *vol)
+{
+    int32_t f = 0;
+    for (int k = 0; k < b->nz; ++k)
+        for (int j = 0; j < b->ny; ++j) {
+            cells[f] = box_mesh_cell(b, 0, j, k);
+            cells[f + 1] = box_mesh_cell(b, b->nx - 1, j, k);
+            for (int s = 0; s < 2; ++s) {
+                coeff[f + s] = CUBE_DX * CUBE_DX / CUBE_DX; /* |S_f| / distance between the cell centres */
+                vol[f + s] = b->mesh.cell_volumes[0];
+            }
+            f += 2;
+        }
+    *ph = (periodic_halo){b, 0};
+    return (cdc_halo){f, cells, coeff, vol, periodic_exchange, one_rank_sum, ph};
+}
+
 static void test_diffusion_halo(void)
 {
     enum { NX = 20, NY = 3, NZ = 3 };
@@ -722,19 +741,8 @@ static void test_diffusion_halo(void)
     const size_t nc = (size_t)t.b.mesh.n_cells;
     int32_t cells[2 * NY * NZ];
     double coeff[2 * NY * NZ], vol[2 * NY * NZ];
-    int32_t f = 0;
-    for (int k = 0; k < NZ; ++k)
-        for (int j = 0; j < NY; ++j) {
-            cells[f] = box_mesh_cell(&t.b, 0, j, k);
-            cells[f + 1] = box_mesh_cell(&t.b, NX - 1, j, k);
-            for (int s = 0; s < 2; ++s) {
-                coeff[f + s] = CUBE_DX * CUBE_DX / CUBE_DX; /* |S_f| / distance between the cell centres */
-                vol[f + s] = t.b.mesh.cell_volumes[0];
-            }
-            f += 2;
-        }
-    periodic_halo ph = {&t.b, 0};
-    const cdc_halo h = {f, cells, coeff, vol, periodic_exchange, one_rank_sum, &ph};
+    periodic_halo ph;
+    const cdc_halo h = periodic_halo_faces(&t.b, &ph, cells, coeff, vol);
     CHECK(cdc_context_set_halo(t.ctx, &h) == CDC_OK, "set halo: %s", cdc_last_error(t.ctx));
     /* a unit source next to the xmin wall and one in the middle: periodic, so the results must be
      * translations of each other (to the CG tolerance); the wall no longer reflects the first */
@@ -871,19 +879,8 @@ static void test_limiter_halo(void)
     const size_t nc = (size_t)t.b.mesh.n_cells;
     int32_t cells[2 * NY * NZ];
     double coeff[2 * NY * NZ], vol[2 * NY * NZ];
-    int32_t f = 0;
-    for (int k = 0; k < NZ; ++k)
-        for (int j = 0; j < NY; ++j) {
-            cells[f] = box_mesh_cell(&t.b, 0, j, k);
-            cells[f + 1] = box_mesh_cell(&t.b, NX - 1, j, k);
-            for (int s = 0; s < 2; ++s) {
-                coeff[f + s] = CUBE_DX;
-                vol[f + s] = t.b.mesh.cell_volumes[0];
-            }
-            f += 2;
-        }
-    periodic_halo ph = {&t.b, 0};
-    const cdc_halo h = {f, cells, coeff, vol, periodic_exchange, one_rank_sum, &ph};
+    periodic_halo ph;
+    const cdc_halo h = periodic_halo_faces(&t.b, &ph, cells, coeff, vol);
     double *a = calloc(nc, sizeof(double)), *m = calloc(nc, sizeof(double)), *w = calloc(nc, sizeof(double));
     /* a full slab two cells thick, up to 1.3: its excess cannot stay in its own layer */
     for (int k = 0; k < NZ; ++k)
