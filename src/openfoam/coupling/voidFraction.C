@@ -77,6 +77,7 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
     bandwidthOverD_(0),
     classRatio_(0),
     alphaMin_(dict.get<scalar>("alphaMin")),
+    smoothExchange_(false),
     movedVolume_(0),
     nLimitedCells_(0),
     nClasses_(0),
@@ -105,6 +106,7 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
         diffusion_.n_steps = d.lookupOrDefault<label>("nSteps", 4);
         diffusion_.d_rule = d.lookupOrDefault<Switch>("DRule", false) ? 1 : 0;
         diffusion_.particle_diameter = d.lookupOrDefault<scalar>("particleDiameter", 0);
+        smoothExchange_ = d.lookupOrDefault<Switch>("smoothExchangeFields", false);
         if (!(diffusion_.bandwidth > 0))
         {
             FatalIOErrorInFunction(dict)
