@@ -96,6 +96,7 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
     const cdc_mesh *m = ctx->mesh;
     const size_t nc = (size_t)m->n_cells, ni = (size_t)m->n_internal_faces;
     /* scratch 0..5 per cell, 6 per internal face */
+    _Static_assert(CDC_N_SCRATCH >= 7, "diffusion uses scratch vectors 0..6");
     for (int k = 0; k < 7; ++k)
         if (cdc_dvec_reserve(&ctx->scratch[k], k == 6 ? (ni > 0 ? ni : 1) : nc))
             return cdc_fail(ctx, CDC_ERR_NOMEM, "diffusion: out of memory");

@@ -18,6 +18,8 @@
 #include <math.h>
 #include <string.h>
 
+_Static_assert(CDC_N_SCRATCH >= 8, "the packing limiter uses scratch vectors 0..7");
+
 /* "no cell with room is reachable": finite, so it crosses any exchange unchanged */
 #define FAR 1e300
 

@@ -54,12 +54,20 @@ coarseDemCoupling::coarseDemCoupling
     ),
     Ksl
     (
-        IOobject("Ksl", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::NO_WRITE),
+        IOobject
+        (
+            "Ksl", mesh.time().timeName(), mesh, IOobject::NO_READ,
+            dict_.lookupOrDefault<Switch>("writeExchangeFields", false) ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
         mesh, dimensionedScalar(dimless/dimTime, Zero)
     ),
     KslUs
     (
-        IOobject("KslUs", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::NO_WRITE),
+        IOobject
+        (
+            "KslUs", mesh.time().timeName(), mesh, IOobject::NO_READ,
+            dict_.lookupOrDefault<Switch>("writeExchangeFields", false) ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
         mesh, dimensionedVector(dimAcceleration, Zero)
     ),
     fFluid

@@ -16,9 +16,9 @@
         As first-step, and the serial and np = 2 alpha_f must agree to 1e-9 (diffusion smoothing
         across the processor boundary: the ranks solve the serial system, to the CG tolerance).
     scene_parallel.py limited <serial case> <np2 case> <scene>
-        As same-alpha, and the packing limiter must have moved volume in both runs, the same volume
-        (to 1e-12) in the same number of cells: excess crosses the processor boundary as it crosses
-        any face.
+        As same-alpha (where excess volume must cross the processor boundary as it crosses any face),
+        and the packing limiter must have engaged in both runs: the same moved volume (as printed)
+        in the same number of cells (both taken before its sweeps: they show it engaged, not how).
     scene_parallel.py refused - <np2 case> <scene> [message]
         The np = 2 run must stop with the message (default: the decomposition mismatch).
 """
