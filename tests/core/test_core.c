@@ -6,7 +6,10 @@
 #include "../../src/core/tools/box_mesh.h"
 #include "check.h"
 
+#include <errno.h>
 #include <math.h>
+#include <pthread.h>
+#include <time.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -930,6 +933,186 @@ static void test_limiter_halo(void)
     cube_case_close(&t);
 }
 
+/* Two "ranks" in two threads, run in lockstep: a box of 16 x 4 x 4 cells split at i = 8 into two
+ * meshes joined by processor faces, each with its own context and a halo whose callbacks swap values
+ * with the other thread (as MPI would). The limiter and the diffusion on the two halves must give
+ * the serial result on the whole box; the rank that starts with no over-full cell must still make
+ * every collective call (else the other waits in vain: the barrier times out and the test fails). */
+enum { TR_NX = 16, TR_NY = 4, TR_NZ = 4, TR_NF = TR_NY * TR_NZ };
+typedef struct {
+    pthread_mutex_t mu;
+    pthread_cond_t cv;
+    int waiting, generation, timed_out;
+    double face[2][TR_NF];  /* each rank's cell values at the split */
+    double sum[2][8];       /* each rank's partial sums */
+} two_ranks;
+typedef struct { two_ranks *w; int rank; const box_mesh *b; } rank_halo;
+
+/* both threads arrive, or after 10 s the waiting one gives up (a mismatch of collective calls) */
+static int two_ranks_barrier(two_ranks *w)
+{
+    pthread_mutex_lock(&w->mu);
+    const int gen = w->generation;
+    if (++w->waiting == 2) {
+        w->waiting = 0;
+        ++w->generation;
+        pthread_cond_broadcast(&w->cv);
+    } else {
+        struct timespec until;
+        clock_gettime(CLOCK_REALTIME, &until);
+        until.tv_sec += 10;
+        while (gen == w->generation && !w->timed_out)
+            if (pthread_cond_timedwait(&w->cv, &w->mu, &until) == ETIMEDOUT) w->timed_out = 1;
+    }
+    const int bad = w->timed_out;
+    pthread_mutex_unlock(&w->mu);
+    return bad ? -1 : 0;
+}
+
+/* this rank's cell next to face f: rank 0 owns i = nx-1 of its half, rank 1 owns i = 0 */
+static int32_t split_cell(const rank_halo *h, int f)
+{
+    return box_mesh_cell(h->b, h->rank == 0 ? h->b->nx - 1 : 0, f % TR_NY, f / TR_NY);
+}
+
+static int two_ranks_exchange(void *user, const double *x, double *nbr)
+{
+    rank_halo *h = user;
+    for (int f = 0; f < TR_NF; ++f) h->w->face[h->rank][f] = x[split_cell(h, f)];
+    if (two_ranks_barrier(h->w)) return -1;
+    for (int f = 0; f < TR_NF; ++f) nbr[f] = h->w->face[1 - h->rank][f];
+    return two_ranks_barrier(h->w); /* the other has read before anyone writes again */
+}
+
+static int two_ranks_sum(void *user, double *values, int n)
+{
+    rank_halo *h = user;
+    if (n > 8) return -1;
+    for (int i = 0; i < n; ++i) h->w->sum[h->rank][i] = values[i];
+    if (two_ranks_barrier(h->w)) return -1;
+    for (int i = 0; i < n; ++i) values[i] = h->w->sum[0][i] + h->w->sum[1][i]; /* same bits on both */
+    return two_ranks_barrier(h->w);
+}
+
+typedef struct {
+    cdc_context *ctx;
+    double *field;
+    int diffuse; /* 0: limiter, 1: diffusion */
+    cdc_status st;
+    double moved;
+    int32_t nlim;
+} rank_job;
+
+static void *rank_run(void *arg)
+{
+    rank_job *j = arg;
+    if (j->diffuse) {
+        cdc_diffusion_params prm = {0};
+        prm.bandwidth = 3 * CUBE_DX;
+        prm.tolerance = 1e-13;
+        j->st = cdc_diffuse(j->ctx, &prm, j->field);
+    } else {
+        j->st = cdc_limit_packing(j->ctx, 0.6, 200, j->field, &j->moved, &j->nlim);
+    }
+    return NULL;
+}
+
+static void test_two_ranks(void)
+{
+    const double dx = CUBE_DX, lo[3] = {0, 0, 0}, hi[3] = {TR_NX * dx, TR_NY * dx, TR_NZ * dx};
+    const double hiA[3] = {TR_NX / 2 * dx, hi[1], hi[2]}, loB[3] = {TR_NX / 2 * dx, 0, 0};
+    const uint8_t kindsA[6] = {CDC_FACE_WALL, CDC_FACE_PROCESSOR, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};
+    const uint8_t kindsB[6] = {CDC_FACE_PROCESSOR, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};
+    box_mesh s, half[2];
+    cdc_context *cs = NULL, *ch[2] = {NULL, NULL};
+    CHECK(box_mesh_create(&s, TR_NX, TR_NY, TR_NZ, lo, hi, ALL_WALLS, 0.0) == 0 &&
+              box_mesh_create(&half[0], TR_NX / 2, TR_NY, TR_NZ, lo, hiA, kindsA, 0.0) == 0 &&
+              box_mesh_create(&half[1], TR_NX / 2, TR_NY, TR_NZ, loB, hi, kindsB, 0.0) == 0,
+          "box meshes");
+    CHECK(cdc_context_create(&s.mesh, &cs) == CDC_OK && cdc_context_create(&half[0].mesh, &ch[0]) == CDC_OK &&
+              cdc_context_create(&half[1].mesh, &ch[1]) == CDC_OK,
+          "contexts: %s", cdc_create_error());
+    if (!cs || !ch[0] || !ch[1]) return;
+    static two_ranks w;
+    pthread_mutex_init(&w.mu, NULL);
+    pthread_cond_init(&w.cv, NULL);
+    rank_halo rh[2] = {{&w, 0, &half[0]}, {&w, 1, &half[1]}};
+    int32_t cells[2][TR_NF];
+    double coeff[TR_NF], vol[TR_NF];
+    for (int q = 0; q < 2; ++q) {
+        for (int f = 0; f < TR_NF; ++f) {
+            cells[q][f] = split_cell(&rh[q], f);
+            coeff[f] = dx; /* |S_f| / distance between the cell centres */
+            vol[f] = dx * dx * dx;
+        }
+        const cdc_halo h = {TR_NF, cells[q], coeff, vol, two_ranks_exchange, two_ranks_sum, &rh[q]};
+        CHECK(cdc_context_set_halo(ch[q], &h) == CDC_OK, "halo %d: %s", q, cdc_last_error(ch[q]));
+    }
+    const size_t nc = (size_t)s.mesh.n_cells, nh = nc / 2;
+    double *serial = calloc(nc, sizeof(double)), *part[2] = {calloc(nh, sizeof(double)), calloc(nh, sizeof(double))};
+    for (int diffuse = 0; diffuse < 2; ++diffuse) {
+        /* an over-packed block in rank 0 against the split (rank 1 starts with room only), or for
+         * the diffusion a unit source next to the split */
+        memset(serial, 0, nc * sizeof *serial);
+        for (int k = 0; k < TR_NZ; ++k)
+            for (int j = 0; j < TR_NY; ++j)
+                for (int i = 5; i < 8; ++i)
+                    if (!diffuse) serial[box_mesh_cell(&s, i, j, k)] = 0.9 + 0.4 * ((i + j + k) % 2);
+        if (diffuse) serial[box_mesh_cell(&s, 7, 1, 2)] = 1.0 / (dx * dx * dx);
+        double total = 0;
+        for (size_t c = 0; c < nc; ++c) total += serial[c];
+        for (int k = 0; k < TR_NZ; ++k)
+            for (int j = 0; j < TR_NY; ++j)
+                for (int i = 0; i < TR_NX; ++i)
+                    part[i / (TR_NX / 2)][box_mesh_cell(&half[0], i % (TR_NX / 2), j, k)] = serial[box_mesh_cell(&s, i, j, k)];
+        rank_job job[2] = {{ch[0], part[0], diffuse, CDC_OK, 0, 0}, {ch[1], part[1], diffuse, CDC_OK, 0, 0}};
+        rank_job js = {cs, serial, diffuse, CDC_OK, 0, 0};
+        rank_run(&js);
+        pthread_t other;
+        pthread_create(&other, NULL, rank_run, &job[1]);
+        rank_run(&job[0]);
+        pthread_join(other, NULL);
+        const char *what = diffuse ? "diffusion" : "limiter";
+        CHECK(!w.timed_out, "%s: the two ranks made different numbers of collective calls", what);
+        CHECK(js.st == CDC_OK && job[0].st == CDC_OK && job[1].st == CDC_OK, "%s: %s / %s / %s", what,
+              cdc_last_error(cs), cdc_last_error(ch[0]), cdc_last_error(ch[1]));
+        double worst = 0, peak = 0, after = 0, in_b = 0;
+        for (int k = 0; k < TR_NZ; ++k)
+            for (int j = 0; j < TR_NY; ++j)
+                for (int i = 0; i < TR_NX; ++i) {
+                    const double v = part[i / (TR_NX / 2)][box_mesh_cell(&half[0], i % (TR_NX / 2), j, k)];
+                    worst = fmax(worst, fabs(v - serial[box_mesh_cell(&s, i, j, k)]));
+                    peak = fmax(peak, fabs(v));
+                    after += v;
+                    if (i >= TR_NX / 2) in_b += v;
+                }
+        printf("    two ranks, %s: max |np2 - serial| %.1e of the peak, conservation %.1e, %.3g of the total in rank 1\n",
+               what, worst / peak, fabs(after - total) / total, in_b / total);
+        CHECK(in_b > 0.05 * total, "%s: only %.3g of the total reached rank 1", what, in_b / total);
+        CHECK(worst <= (diffuse ? 1e-9 : 1e-13) * peak, "%s: two ranks differ from serial by %.2e of the peak", what,
+              worst / peak);
+        CHECK(fabs(after - total) <= 1e-14 * total, "%s: conservation across the ranks %.2e", what,
+              fabs(after - total) / total);
+        if (!diffuse) {
+            CHECK(job[1].nlim == 0 && job[0].nlim == js.nlim, "limited cells: rank 0 %d, rank 1 %d, serial %d",
+                  (int)job[0].nlim, (int)job[1].nlim, (int)js.nlim);
+            CHECK(fabs(job[0].moved + job[1].moved - js.moved) <= 1e-14 * js.moved, "moved %g + %g vs serial %g",
+                  job[0].moved, job[1].moved, js.moved);
+        }
+    }
+    free(serial);
+    free(part[0]);
+    free(part[1]);
+    cdc_context_destroy(cs);
+    cdc_context_destroy(ch[0]);
+    cdc_context_destroy(ch[1]);
+    box_mesh_destroy(&s);
+    box_mesh_destroy(&half[0]);
+    box_mesh_destroy(&half[1]);
+    pthread_cond_destroy(&w.cv);
+    pthread_mutex_destroy(&w.mu);
+}
+
 /* ------------------------------------------------------------------ parallel: ghosts give serial results */
 
 /* The box [0, 24dx] x [0, 10dx] x [0, 8dx] on one mesh (serial) and split at x = 12 dx into two
@@ -1170,6 +1353,7 @@ int main(void)
     run("size_aware_diffusion", test_size_aware_diffusion);
     run("limiter", test_limiter);
     run("limiter_halo", test_limiter_halo);
+    run("two_ranks", test_two_ranks);
     run("parallel_matches_serial", test_parallel_matches_serial);
     run("bad_input", test_bad_input);
     run("method_registry", test_method_registry);
