@@ -1,0 +1,70 @@
+#!/bin/bash
+# Smoke test of the DPMFoam baseline chain (validation/muller/dpmFoam): Debian's DPMFoam, the
+# profile and comparison scripts, and restarts that change the number of ranks.
+#
+#   tests/integration/run_dpmfoam_smoke.sh       (after ./Allwmake; about a minute)
+#
+# In a copy of validation/muller/dpmFoam under platforms/tests/ (a user's runs/ are left alone):
+# 1. `Allrun -mode smoke` (serial) ends with exit 0, all 9240 particles in the samples and an
+#    errors.csv with the gas-fraction and v_z rows;
+# 2. `-continue -np 2` on that run decomposes its latest time for 2 ranks and ends with exit 0;
+# 3. a run whose ranks got further than its serial data is refused by a serial `-continue`, with a
+#    message saying what to do.
+# Exit status 0 only if everything passed; the last line is "N passed, N failed".
+set -uo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+project="$(cd "$here/../.." && pwd)"
+# shellcheck source=../../etc/bashrc
+. "$project/etc/bashrc"
+npass=0
+nfail=0
+result() { # ok|fail message
+    if [ "$1" = ok ]; then npass=$((npass + 1)); echo "PASS: $2"; else nfail=$((nfail + 1)); echo "FAIL: $2"; fi
+}
+finish() {
+    echo "$npass passed, $nfail failed"
+    [ "$nfail" -eq 0 ]
+    exit $?
+}
+command -v DPMFoam > /dev/null || { result fail "DPMFoam not found (Debian's openfoam package; ./Allwmake installs it)"; finish; }
+
+work="$project/platforms/tests/dpmFoam"
+rm -rf "$work"
+mkdir -p "$(dirname "$work")"
+cp -r "$project/validation/muller/dpmFoam" "$work"
+rm -rf "$work/runs"
+cd "$work" || exit 1
+export COARSEDEM_DIR="$project"
+run=runs/dpmFoam_WenYu_dx1_U0.9_smoke
+
+./Allrun -mode smoke > log.serial 2>&1
+rc=$?
+parcels=$(grep -h 'Current number of parcels' "$run/log.DPMFoam" 2>/dev/null | tail -1 | awk '{print $NF}')
+rows=$(grep -cE '^(void_fraction|vz_particle_m_per_s),' "$run/results/comparison/errors.csv" 2>/dev/null)
+if [ $rc -eq 0 ] && [ "$parcels" = 9240 ] && [ "${rows:-0}" -ge 2 ]; then
+    result ok "serial smoke: exit 0, 9240 parcels, errors.csv with $rows gas-fraction/v_z rows"
+else
+    result fail "serial smoke: exit $rc, parcels '${parcels:-none}', errors.csv rows ${rows:-0} (see $work/log.serial)"
+fi
+
+./Allrun -mode smoke -continue -np 2 > log.np2 2>&1
+rc=$?
+n=$(ls -d "$run"/processor* 2>/dev/null | wc -l)
+sub=$(sed -n 's/^numberOfSubdomains *\([0-9]*\);/\1/p' "$run/system/decomposeParDict")
+if [ $rc -eq 0 ] && [ "$n" -eq 2 ] && [ "$sub" = 2 ] && [ -d "$run/processor1/0.001" ]; then
+    result ok "serial run continued with -np 2: its latest time decomposed for 2 ranks, exit 0"
+else
+    result fail "continue with -np 2: exit $rc, $n processor directories, numberOfSubdomains '$sub' (see $work/log.np2)"
+fi
+
+# as if the ranks had got further than the serial data: a serial continue must stop and say why
+mkdir -p "$run"/processor{0,1}/0.0015
+./Allrun -mode smoke -continue > log.refused 2>&1
+rc=$?
+if [ $rc -ne 0 ] && grep -q 'continue with -np 2, or run reconstructPar' log.refused; then
+    result ok "serial continue of a run that got further on 2 ranks: refused, saying what to do"
+else
+    result fail "serial continue of a run further on 2 ranks: exit $rc, message: $(tail -1 log.refused)"
+fi
+finish
