@@ -12,8 +12,51 @@ profile CSVs and comparison plots to <out>/<run>_<commit>/ (runs of one model at
 side by side) and writes <out>/error_vs_runtime.{csv,md,png}; the PNG labels each model's last run
 on the command line (give the runs oldest first) and shows its earlier runs as grey circles. Where a run also has the binned
 particle velocity (profile_vzbinned, binnedParticleFields on), its error is a further column.
+<out>/profiles_all_models.png: for every MR data file at the runs' inlet velocity (the data
+directory next to this script), each model's last run against the data, one panel per profile.
 """
 import csv, glob, os, re, shutil, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from compare import read_profile
+
+DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
+
+
+def plot_profiles(out, latest, plt):
+    """One panel per MR data file at the runs' inlet velocity: each model's last run (its copied
+    profile, +-2 batch SEM as a band) against the data."""
+    speeds = {m.group(1) for r in latest.values() for m in [re.search(r"_U([0-9.]+)_", r["run"])] if m}
+    files = []
+    for path in sorted(glob.glob(os.path.join(DATA_DIR, "mueller_U*_*_z*mm_MR.csv"))):
+        m = re.match(r"mueller_U([0-9.]+)_(\w+?)_z([0-9.]+)mm_MR\.csv", os.path.basename(path))
+        if m and m.group(1) in speeds:
+            files.append((path, m.group(1), m.group(2), m.group(3)))
+    if not files:
+        return
+    fig, axes = plt.subplots(1, len(files), figsize=(5.5 * len(files), 4.2), squeeze=False)
+    for ax, (path, U, q, h) in zip(axes[0], files):
+        for model, r in latest.items():
+            sim = os.path.join(out, r["run"], f"profile_{q}_z{h}mm.csv")
+            if f"_U{U}_" not in r["run"] or not os.path.exists(sim):
+                continue
+            _, sx, sy, se = read_profile(sim)
+            line, = ax.plot([x * 1e3 for x in sx], sy, "-", label=f"{model} ({r['commit']})")
+            band = [(y - 2 * e, y + 2 * e) for y, e in zip(sy, se) if e == e]
+            if len(band) == len(sy):
+                ax.fill_between([x * 1e3 for x in sx], [b[0] for b in band], [b[1] for b in band],
+                                color=line.get_color(), alpha=0.12, lw=0)
+        _, dx, dy, _ = read_profile(path)
+        ax.plot([x * 1e3 for x in dx], dy, "ko", ms=4, label="Müller et al. (MR)")
+        ax.set_xlabel("distance from the left wall (mm)")
+        ax.set_ylabel({"voidfraction": "time-averaged gas fraction",
+                       "vz": "time-averaged particle v_z (m/s)"}.get(q, q))
+        ax.set_title(f"U = {U} m/s, z = {h} mm")
+        ax.legend(fontsize=7)
+    fig.suptitle("Mueller bed: each model's last run against the MR data (bands: +-2 batch SEM)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "profiles_all_models.png"), dpi=110)
+    plt.close(fig)
 
 def log_segments(log):
     """Per start of the solver (a log continued after a restart holds several, each beginning with
@@ -172,6 +215,8 @@ def main():
                      "each model's last run as given to summary.py; grey circles: its earlier runs, see the table)")
         fig.tight_layout()
         fig.savefig(os.path.join(out, "error_vs_runtime.png"), dpi=110)
+        plt.close(fig)
+        plot_profiles(out, latest, plt)
     except ImportError:
         print("summary.py: matplotlib missing, no PNG")
     for r in rows:
