@@ -55,6 +55,8 @@ check unknown_model_file 's/^voidFractionModel .*/voidFractionModel centroid;/' 
 check missing_keyword '/^couplingInterval/d' "Entry 'couplingInterval' not found in dictionary"
 check unknown_force 's/GidaspowDrag/GidaspowDarg/' "unknown force model GidaspowDarg in entry forceModels"
 check force_list_valid 's/GidaspowDrag/GidaspowDarg/' "DiFeliceDrag"
+check misspelt_props 's/bigParticleProps /bigparticleProps /' "unknown dictionary bigparticleProps in"
+check misspelt_props_valid 's/bigParticleProps /bigparticleProps /' "bigParticleProps"
 check expansion_lt_1 's/bigParticleProps .*/bigParticleProps { expansionFactor 0.5; }/' \
     "bigParticle: expansionFactor 0.5 is invalid (must be >= 1"
 check bandwidth_le_0 's/^voidFractionModel .*/voidFractionModel gaussian;/; s/gaussianProps .*/gaussianProps { bandwidth -1e-3; }/' \

@@ -14,6 +14,28 @@ static IOobject couplingDictIO(const fvMesh& mesh)
     return IOobject("couplingProperties", mesh.time().constant(), mesh, IOobject::MUST_READ, IOobject::NO_WRITE);
 }
 
+// A <model>Props dictionary whose name matches no model (a misspelt name) would be ignored and
+// its model would run with the defaults: refuse it, naming the dictionaries that are read.
+static void checkPropsDictionaries(const dictionary& dict)
+{
+    wordHashSet known{"backgroundFieldsProps", "diffusionProps", "sizeAwareDiffusionProps"};
+    for (int i = 0; i < cdc_method_count(); ++i) known.insert(word(cdc_method_name(i)) + "Props");
+    for (const word& f : forceModel::dictionaryConstructorTablePtr_->sortedToc()) known.insert(f + "Props");
+    for (const entry& e : dict)
+    {
+        const word& k = e.keyword();
+        if (e.isDict() && k.size() > 5 && k.compare(k.size() - 5, 5, "Props") == 0 && !known.found(k))
+        {
+            string names;
+            for (const word& w : known.sortedToc()) names += (names.empty() ? "" : ", ") + w;
+            FatalIOErrorInFunction(dict)
+                << "unknown dictionary " << k << " in " << dict.name() << " (a misspelt model name?"
+                << " it would be ignored)" << nl << "    dictionaries read: " << names.c_str()
+                << exit(FatalIOError);
+        }
+    }
+}
+
 coarseDemCoupling::coarseDemCoupling
 (
     const fvMesh& mesh, const dimensionedScalar& rho, const dimensionedScalar& nu, const dimensionedVector& g
@@ -97,6 +119,7 @@ coarseDemCoupling::coarseDemCoupling
             << " is invalid: must be >= 1" << exit(FatalIOError);
     }
 
+    checkPropsDictionaries(dict_);
     const wordList names(dict_.get<wordList>("forceModels"));
     bool hasDrag = false, hasGradP = false, hasArchimedes = false;
     forAll(names, i)
