@@ -49,6 +49,22 @@ check_runs() {
     fi
 }
 
+# check_warns NAME 'sed expression' 'expected text': a setting that has no effect; the case must run
+# to its end (exit 0) and say so in its log
+check_warns() {
+    local name="$1" edit="$2" expect="$3" c="$work/$1"
+    cp -r "$base" "$c"
+    sed -i "$edit" "$c/constant/couplingProperties"
+    (cd "$c" && timeout 120 coarseDemFoam > log 2>&1)
+    local rc=$?
+    if [ $rc -eq 0 ] && grep -q "^End" "$c/log" && grep -qF -- "$expect" "$c/log"; then
+        echo "PASS: ineffective setting '$name' runs and warns: $expect"; pass=$((pass+1))
+    else
+        echo "FAIL: ineffective setting '$name' (exit $rc) did not run and warn: $expect"; tail -4 "$c/log" | sed 's/^/    /'
+        fail=$((fail+1))
+    fi
+}
+
 check unknown_model 's/^voidFractionModel .*/voidFractionModel centroid;/' \
     "unknown void fraction method 'centroid'; valid methods are: centre, divided, bigParticle, twoGrid, gaussian, exact"
 check unknown_model_file 's/^voidFractionModel .*/voidFractionModel centroid;/' "constant/couplingProperties"
@@ -57,6 +73,8 @@ check unknown_force 's/GidaspowDrag/GidaspowDarg/' "unknown force model Gidaspow
 check force_list_valid 's/GidaspowDrag/GidaspowDarg/' "DiFeliceDrag"
 check misspelt_props 's/bigParticleProps /bigparticleProps /' "unknown dictionary bigparticleProps in"
 check misspelt_props_valid 's/bigParticleProps /bigparticleProps /' "bigParticleProps"
+check_warns smooth_exchange_without_diffusion 's/^diffusionProps .*/diffusionProps { bandwidth 6e-3; smoothExchangeFields true; }/' \
+    "couplingProperties\"/diffusionProps acts with smoothingModel diffusion only; smoothingModel is off: ignored"
 check expansion_lt_1 's/bigParticleProps .*/bigParticleProps { expansionFactor 0.5; }/' \
     "bigParticle: expansionFactor 0.5 is invalid (must be >= 1"
 check bandwidth_le_0 's/^voidFractionModel .*/voidFractionModel gaussian;/; s/gaussianProps .*/gaussianProps { bandwidth -1e-3; }/' \

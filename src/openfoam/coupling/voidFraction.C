@@ -130,11 +130,21 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
                 << exit(FatalIOError);
         }
     }
-    else if (sm != "off")
+    if (sm != "off" && smoothing_ == smoothing::off)
     {
         FatalIOErrorInFunction(dict)
             << "unknown smoothingModel " << sm << " in " << dict.name() << nl
             << "    valid smoothing models: off, diffusion, sizeAwareDiffusion" << exit(FatalIOError);
+    }
+    if
+    (
+        smoothing_ != smoothing::diffusion && dict.isDict("diffusionProps")
+     && dict.subDict("diffusionProps").lookupOrDefault<Switch>("smoothExchangeFields", false)
+    )
+    {
+        WarningInFunction
+            << "smoothExchangeFields in " << dict.name() << "/diffusionProps acts with smoothingModel"
+            << " diffusion only; smoothingModel is " << sm << ": ignored" << endl;
     }
     if (smoothing_ == smoothing::sizeAware && Pstream::parRun())
     {
