@@ -7,8 +7,11 @@
 # In a copy of validation/muller/dpmFoam under platforms/tests/ (a user's runs/ are left alone):
 # 1. `Allrun -mode smoke` (serial) ends with exit 0, all 9240 particles in the samples and an
 #    errors.csv with the gas-fraction and v_z rows;
-# 2. `-continue -np 2` on that run decomposes its latest time for 2 ranks and ends with exit 0;
-# 3. a run whose ranks got further than its serial data is refused by a serial `-continue`, with a
+# 2. with its last write removed, `-continue -np 2` decomposes the write before it (0.0005 s) for 2
+#    ranks, which run to the end (0.001 s): exit 0, all particles;
+# 3. `-continue -np 2` again, now from the ranks' own last write (which has no Uwall, the wall
+#    velocity the collision model reads): Uwall is carried over and the run ends with exit 0;
+# 4. a run whose ranks got further than its serial data is refused by a serial `-continue`, with a
 #    message saying what to do.
 # Exit status 0 only if everything passed; the last line is "N passed, N failed".
 set -uo pipefail
@@ -48,14 +51,27 @@ else
     result fail "serial smoke: exit $rc, parcels '${parcels:-none}', errors.csv rows ${rows:-0} (see $work/log.serial)"
 fi
 
+# the serial run's last write removed: the ranks must compute 0.0005 -> 0.001 themselves
+rm -rf "$run/0.001"
 ./Allrun -mode smoke -continue -np 2 > log.np2 2>&1
 rc=$?
 n=$(ls -d "$run"/processor* 2>/dev/null | wc -l)
 sub=$(sed -n 's/^numberOfSubdomains *\([0-9]*\);/\1/p' "$run/system/decomposeParDict")
-if [ $rc -eq 0 ] && [ "$n" -eq 2 ] && [ "$sub" = 2 ] && [ -d "$run/processor1/0.001" ]; then
-    result ok "serial run continued with -np 2: its latest time decomposed for 2 ranks, exit 0"
+parcels=$(grep -h 'Current number of parcels' "$run/log.DPMFoam" 2>/dev/null | tail -1 | awk '{print $NF}')
+if [ $rc -eq 0 ] && [ "$n" -eq 2 ] && [ "$sub" = 2 ] && [ -d "$run/processor1/0.001" ] && [ "$parcels" = 9240 ]; then
+    result ok "serial run continued with -np 2 from 0.0005 s: decomposed for 2 ranks, run to 0.001 s, 9240 parcels"
 else
-    result fail "continue with -np 2: exit $rc, $n processor directories, numberOfSubdomains '$sub' (see $work/log.np2)"
+    result fail "continue with -np 2: exit $rc, $n processor directories, numberOfSubdomains '$sub'," \
+        "parcels '${parcels:-none}' (see $work/log.np2)"
+fi
+
+# again on the same ranks, from their own last write (the solver writes no Uwall there)
+./Allrun -mode smoke -continue -np 2 > log.np2again 2>&1
+rc=$?
+if [ $rc -eq 0 ] && [ -f "$run/processor0/0.001/Uwall" ] && [ -f "$run/processor1/0.001/Uwall" ]; then
+    result ok "continued again on 2 ranks from their own write: Uwall carried over, exit 0"
+else
+    result fail "continue again with -np 2: exit $rc, Uwall in processor*/0.001: $(ls "$run"/processor*/0.001/Uwall 2>/dev/null | wc -l) of 2 (see $work/log.np2again)"
 fi
 
 # as if the ranks had got further than the serial data: a serial continue must stop and say why
