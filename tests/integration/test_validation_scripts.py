@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Unit checks of the Mueller validation scripts' bookkeeping of stopped and continued runs:
 profiles.drop_superseded (samples of a stopped segment re-sampled by its continuation) and
-summary.log_segments (wall seconds per start, cut where the continuation started, MPI ranks).
+summary.log_segments (wall seconds per start, cut where the continuation started, MPI ranks), and
+summary.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs).
 Prints PASS/FAIL per check and "N passed, N failed"."""
 import importlib.util, os, sys, tempfile, time
 
@@ -55,6 +56,37 @@ with tempfile.TemporaryDirectory() as tmp:
     check(clocks == [200.0, 0.0, 101.0] and [s["nprocs"] for s in segs] == [1, 1, 2],
           "wall seconds per start %s (expected 200 = up to t = 0.2 where the run continued, 0, 101), "
           "ranks %s" % (clocks, [s["nprocs"] for s in segs]))
+
+    # the profiles figure: two cases at 0.9 m/s (one without the 15 mm profile, one without SEMs),
+    # one at 0.6 m/s; the data of both speeds: 3 + 2 panels, each case where it has a profile
+    data = os.path.join(tmp, "data")
+    os.makedirs(data)
+    for U, q, h in ((0.9, "voidfraction", "16.4"), (0.9, "vz", "15"), (0.6, "voidfraction", "16.4"),
+                    (0.6, "voidfraction", "31.2"), (0.9, "voidfraction", "31.2")):
+        with open(os.path.join(data, "mueller_U%g_%s_z%smm_MR.csv" % (U, q, h)), "w") as f:
+            f.write("# test\nx_m,%s\n0.01,0.5\n0.03,0.6\n" % q)
+    out = os.path.join(tmp, "out")
+    rows = []
+    for name, commit, profs, sem in (("a_dx1_U0.9_short", "c1", ("voidfraction_z16.4mm",), "0.01"),
+                                     ("b_dx1_U0.9_short", "c2", ("voidfraction_z16.4mm", "vz_z15mm"), ""),
+                                     ("a_dx0.67_U0.6_short", "c3", ("voidfraction_z16.4mm",), "0.02")):
+        run = name + "_" + commit
+        os.makedirs(os.path.join(out, run))
+        for pr in profs:
+            with open(os.path.join(out, run, "profile_%s.csv" % pr), "w") as f:
+                f.write("# test\nx_m,q,sem\n0.005,0.5,%s\n0.039,0.55,%s\n" % (sem, sem))
+        rows.append({"run": run, "name": name, "commit": commit})
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    try:
+        n = summary.plot_profiles(out, rows, plt, data)
+        made = os.path.exists(os.path.join(out, "profiles_all_models.png"))
+        err = ""
+    except Exception as e:   # any failure of the figure is this check's failure
+        n, made, err = 0, False, repr(e)
+    check(n == 5 and made, "profiles figure: %d panels for two inlet velocities (expected 5), PNG %s%s"
+          % (n, "written" if made else "missing", (": " + err) if err else ""))
 
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)

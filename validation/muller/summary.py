@@ -12,8 +12,8 @@ profile CSVs and comparison plots to <out>/<run>_<commit>/ (runs of one model at
 side by side) and writes <out>/error_vs_runtime.{csv,md,png}; the PNG labels each model's last run
 on the command line (give the runs oldest first) and shows its earlier runs as grey circles. Where a run also has the binned
 particle velocity (profile_vzbinned, binnedParticleFields on), its error is a further column.
-<out>/profiles_all_models.png: for every MR data file at the runs' inlet velocity (the data
-directory next to this script), each model's last run against the data, one panel per profile.
+<out>/profiles_all_models.png: for every MR data file at an inlet velocity of the runs (the data
+directory next to this script), each case's last run (model, dx/d, U, mode) against the data.
 """
 import csv, glob, os, re, shutil, sys
 
@@ -23,40 +23,47 @@ from compare import read_profile
 DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
 
 
-def plot_profiles(out, latest, plt):
-    """One panel per MR data file at the runs' inlet velocity: each model's last run (its copied
-    profile, +-2 batch SEM as a band) against the data."""
-    speeds = {m.group(1) for r in latest.values() for m in [re.search(r"_U([0-9.]+)_", r["run"])] if m}
+def plot_profiles(out, rows, plt, data_dir=DATA_DIR):
+    """One panel per MR data file at an inlet velocity of the runs: each case's last run (a case:
+    model, dx/d, U and mode, the run directory's name) against the data, its profile as copied to
+    <out>, +-2 batch SEM as a band. Returns the number of panels."""
+    latest = {r["name"]: r for r in rows}
+    def inlet(name):
+        m = re.search(r"_U([0-9.]+)_", name)
+        return float(m.group(1)) if m else None
     files = []
-    for path in sorted(glob.glob(os.path.join(DATA_DIR, "mueller_U*_*_z*mm_MR.csv"))):
+    for path in sorted(glob.glob(os.path.join(data_dir, "mueller_U*_*_z*mm_MR.csv"))):
         m = re.match(r"mueller_U([0-9.]+)_(\w+?)_z([0-9.]+)mm_MR\.csv", os.path.basename(path))
-        if m and m.group(1) in speeds:
-            files.append((path, m.group(1), m.group(2), m.group(3)))
+        if m and any(inlet(n) == float(m.group(1)) for n in latest):
+            files.append((path, float(m.group(1)), m.group(2), m.group(3)))
     if not files:
-        return
+        return 0
     fig, axes = plt.subplots(1, len(files), figsize=(5.5 * len(files), 4.2), squeeze=False)
     for ax, (path, U, q, h) in zip(axes[0], files):
-        for model, r in latest.items():
+        for name, r in latest.items():
             sim = os.path.join(out, r["run"], f"profile_{q}_z{h}mm.csv")
-            if f"_U{U}_" not in r["run"] or not os.path.exists(sim):
+            if inlet(name) != U or not os.path.exists(sim):
                 continue
             _, sx, sy, se = read_profile(sim)
-            line, = ax.plot([x * 1e3 for x in sx], sy, "-", label=f"{model} ({r['commit']})")
-            band = [(y - 2 * e, y + 2 * e) for y, e in zip(sy, se) if e == e]
-            if len(band) == len(sy):
-                ax.fill_between([x * 1e3 for x in sx], [b[0] for b in band], [b[1] for b in band],
-                                color=line.get_color(), alpha=0.12, lw=0)
+            if not sx:
+                continue
+            label = name.replace(f"_U{name.split('_U')[1].split('_')[0]}", "")
+            line, = ax.plot([x * 1e3 for x in sx], sy, "-", label=f"{label} ({r['commit']})")
+            if all(e == e for e in se):
+                ax.fill_between([x * 1e3 for x in sx], [y - 2 * e for y, e in zip(sy, se)],
+                                [y + 2 * e for y, e in zip(sy, se)], color=line.get_color(), alpha=0.12, lw=0)
         _, dx, dy, _ = read_profile(path)
         ax.plot([x * 1e3 for x in dx], dy, "ko", ms=4, label="Müller et al. (MR)")
         ax.set_xlabel("distance from the left wall (mm)")
         ax.set_ylabel({"voidfraction": "time-averaged gas fraction",
                        "vz": "time-averaged particle v_z (m/s)"}.get(q, q))
-        ax.set_title(f"U = {U} m/s, z = {h} mm")
+        ax.set_title(f"U = {U:g} m/s, z = {h} mm")
         ax.legend(fontsize=7)
-    fig.suptitle("Mueller bed: each model's last run against the MR data (bands: +-2 batch SEM)")
+    fig.suptitle("Mueller bed: each case's last run against the MR data (bands: +-2 batch SEM)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "profiles_all_models.png"), dpi=110)
     plt.close(fig)
+    return len(files)
 
 def log_segments(log):
     """Per start of the solver (a log continued after a restart holds several, each beginning with
@@ -150,7 +157,7 @@ def main():
         void = errs.get(("void_fraction", "16.4"), nan5)
         vz = errs.get(("vz_particle_m_per_s", "15"), nan5)
         vzb = errs.get(("vz_particle_binned_m_per_s", "15"), nan5)
-        rows.append(dict(run=label, model=name.split("_")[0], wall=wall, core=core, ranks=ranks, commit=commit, coupling_share=coupling / total,
+        rows.append(dict(run=label, name=name, model=name.split("_")[0], wall=wall, core=core, ranks=ranks, commit=commit, coupling_share=coupling / total,
                          fluid_share=st.get("fluid", 0) / total, dem_share=st.get("DEM", 0) / total,
                          void_rms=void[0], void_sem=void[2], void_sym=void[3], void_clean=void[4],
                          vz_rms=vz[0], vz_sem=vz[2], vz_sym=vz[3], vz_clean=vz[4],
@@ -216,7 +223,10 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(out, "error_vs_runtime.png"), dpi=110)
         plt.close(fig)
-        plot_profiles(out, latest, plt)
+        try:
+            plot_profiles(out, rows, plt)
+        except (OSError, ValueError, IndexError) as e:   # the table above is written: say what failed
+            print(f"summary.py: profiles_all_models.png not made: {e}")
     except ImportError:
         print("summary.py: matplotlib missing, no PNG")
     for r in rows:
