@@ -72,7 +72,11 @@ check missing_keyword '/^couplingInterval/d' "Entry 'couplingInterval' not found
 check unknown_force 's/GidaspowDrag/GidaspowDarg/' "unknown force model GidaspowDarg in entry forceModels"
 check force_list_valid 's/GidaspowDrag/GidaspowDarg/' "DiFeliceDrag"
 check misspelt_props 's/bigParticleProps /bigparticleProps /' "unknown dictionary bigparticleProps in"
-check misspelt_props_valid 's/bigParticleProps /bigparticleProps /' "bigParticleProps"
+check misspelt_props_valid 's/bigParticleProps /bigparticleProps /' "bigParticleProps, centreProps"
+# the model's own reading must not come first: a misspelt dictionary of the selected model
+check misspelt_props_selected 's/^voidFractionModel .*/voidFractionModel gaussian;/; s/gaussianProps /gausianProps /' \
+    "unknown dictionary gausianProps in"
+check misspelt_props_case 's/bigParticleProps /bigParticleprops /' "unknown dictionary bigParticleprops in"
 check_warns smooth_exchange_without_diffusion 's/^diffusionProps .*/diffusionProps { bandwidth 6e-3; smoothExchangeFields true; }/' \
     "couplingProperties\"/diffusionProps acts with smoothingModel diffusion only; smoothingModel is off: ignored"
 check expansion_lt_1 's/bigParticleProps .*/bigParticleProps { expansionFactor 0.5; }/' \

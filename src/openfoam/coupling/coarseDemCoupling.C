@@ -14,9 +14,11 @@ static IOobject couplingDictIO(const fvMesh& mesh)
     return IOobject("couplingProperties", mesh.time().constant(), mesh, IOobject::MUST_READ, IOobject::NO_WRITE);
 }
 
-// A <model>Props dictionary whose name matches no model (a misspelt name) would be ignored and
-// its model would run with the defaults: refuse it, naming the dictionaries that are read.
-static void checkPropsDictionaries(const dictionary& dict)
+// The sub-dictionaries of couplingProperties are the <model>Props of the models. One whose name
+// matches no model (a misspelt name) would be ignored and its model would run with the defaults:
+// refuse it, naming the dictionaries that are read. Returns its argument, so that the check runs
+// before the first model reads its dictionary.
+static const dictionary& checkPropsDictionaries(const dictionary& dict)
 {
     wordHashSet known{"backgroundFieldsProps", "diffusionProps", "sizeAwareDiffusionProps"};
     for (int i = 0; i < cdc_method_count(); ++i) known.insert(word(cdc_method_name(i)) + "Props");
@@ -24,7 +26,7 @@ static void checkPropsDictionaries(const dictionary& dict)
     for (const entry& e : dict)
     {
         const word& k = e.keyword();
-        if (e.isDict() && k.size() > 5 && k.compare(k.size() - 5, 5, "Props") == 0 && !known.found(k))
+        if (e.isDict() && k != "FoamFile" && !known.found(k))
         {
             string names;
             for (const word& w : known.sortedToc()) names += (names.empty() ? "" : ", ") + w;
@@ -34,6 +36,7 @@ static void checkPropsDictionaries(const dictionary& dict)
                 << exit(FatalIOError);
         }
     }
+    return dict;
 }
 
 coarseDemCoupling::coarseDemCoupling
@@ -44,7 +47,7 @@ coarseDemCoupling::coarseDemCoupling
     mesh_(mesh),
     dict_(couplingDictIO(mesh)),
     modelB_(false),
-    couplingInterval_(dict_.get<label>("couplingInterval")),
+    couplingInterval_(checkPropsDictionaries(dict_).get<label>("couplingInterval")),
     implicitDrag_(dict_.lookupOrDefault<Switch>("implicitDrag", true)),
     implicitParticleDrag_(dict_.lookupOrDefault<Switch>("implicitParticleDrag", true)),
     demRestart_(dict_.lookupOrDefault<Switch>("demRestart", true)),
@@ -119,7 +122,6 @@ coarseDemCoupling::coarseDemCoupling
             << " is invalid: must be >= 1" << exit(FatalIOError);
     }
 
-    checkPropsDictionaries(dict_);
     const wordList names(dict_.get<wordList>("forceModels"));
     bool hasDrag = false, hasGradP = false, hasArchimedes = false;
     forAll(names, i)
