@@ -20,16 +20,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 project="$(cd "$here/../.." && pwd)"
 # shellcheck source=../../etc/bashrc
 . "$project/etc/bashrc"
-npass=0
-nfail=0
-result() { # ok|fail message
-    if [ "$1" = ok ]; then npass=$((npass + 1)); echo "PASS: $2"; else nfail=$((nfail + 1)); echo "FAIL: $2"; fi
-}
-finish() {
-    echo "$npass passed, $nfail failed"
-    [ "$nfail" -eq 0 ]
-    exit $?
-}
+. "$here/result.sh"
 command -v DPMFoam > /dev/null || { result fail "DPMFoam not found (Debian's openfoam package; ./Allwmake installs it)"; finish; }
 
 work="$project/platforms/tests/dpmFoam"

@@ -17,16 +17,7 @@ project="$(cd "$here/../.." && pwd)"
 . "$project/etc/bashrc"
 
 lig="$COARSEDEM_LIGGGHTS_DIR"
-npass=0
-nfail=0
-result() { # ok|fail message
-    if [ "$1" = ok ]; then npass=$((npass + 1)); echo "PASS: $2"; else nfail=$((nfail + 1)); echo "FAIL: $2"; fi
-}
-finish() {
-    echo "$npass passed, $nfail failed"
-    [ "$nfail" -eq 0 ]
-    exit $?
-}
+. "$here/result.sh"
 
 if [ ! -x "$lig/bin/liggghts" ] || [ ! -f "$lig/lib/libliggghts.so" ]; then
     result fail "no LIGGGHTS build in $lig: run ./Allwmake first"

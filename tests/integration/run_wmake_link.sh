@@ -10,12 +10,7 @@ set -uo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 project="$(cd "$here/../.." && pwd)"
-npass=0
-nfail=0
-result() {
-    if [ "$1" = ok ]; then npass=$((npass + 1)); echo "PASS: $2"; else nfail=$((nfail + 1)); echo "FAIL: $2"; fi
-}
-finish() { echo "$npass passed, $nfail failed"; [ "$nfail" -eq 0 ]; exit $?; }
+. "$here/result.sh"
 
 # shellcheck source=../../etc/wmakeEnv
 if ! . "$project/etc/wmakeEnv"; then
