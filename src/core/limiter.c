@@ -136,21 +136,21 @@ cdc_status cdc_limit_packing(cdc_context *ctx, double alpha_max, int max_sweeps,
          * door moves downhill, so a packed block empties in about as many sweeps as it is cells
          * wide, not as many as its width squared */
         if ((st = hop_distances(ctx, room, dist, f_dist)) != CDC_OK) return st;
-        /* donors: what they give into the neighbours' room, and what hops on */
-        for (size_t c = 0; c < nc; ++c) give[c] = nb_room[c] = hop[c] = 0.0;
+        /* donors: what they give into the neighbours' room, and what hops on. First each donor's
+         * neighbours: their room, and how many are downhill (kept in hop[] until the hop share is
+         * known) */
         for (size_t c = 0; c < nc; ++c) {
+            give[c] = nb_room[c] = hop[c] = 0.0;
             if (vol[c] - alpha_max * m->cell_volumes[c] <= 0.0) continue;
-            for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q)
+            for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
                 nb_room[c] += room[ctx->cell_cells[q]];
-        }
-        for (int32_t i = 0; i < nf; ++i) nb_room[fcell[i]] += f_room[i];
-        /* count of downhill neighbours per donor, kept in hop[] until the hop share is known */
-        for (size_t c = 0; c < nc; ++c) {
-            if (vol[c] - alpha_max * m->cell_volumes[c] <= 0.0) continue;
-            for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q)
                 hop[c] += dist[ctx->cell_cells[q]] < dist[c];
+            }
         }
-        for (int32_t i = 0; i < nf; ++i) hop[fcell[i]] += f_dist[i] < dist[fcell[i]];
+        for (int32_t i = 0; i < nf; ++i) {
+            nb_room[fcell[i]] += f_room[i];
+            hop[fcell[i]] += f_dist[i] < dist[fcell[i]];
+        }
         for (size_t c = 0; c < nc; ++c) {
             const double excess = vol[c] - alpha_max * m->cell_volumes[c];
             if (excess <= 0.0) { hop[c] = 0.0; continue; }
