@@ -448,41 +448,53 @@ void coarseDemCoupling::couple
         if (implicitParticleDrag_) dem_->pushDrag(dragK_, dragUf_);
     }
     const scalar rho = fluid_.rho;
+    const bool smoothSources = voidFraction_.smoothsExchangeFields();
     vectorField q(n);
-    if (voidFraction_.smoothsExchangeFields())
+    if (implicitDrag_ && !smoothSources)
     {
-        smoothedSources(U, Ksl, KslUs, fFluid);
+        scalarField Kr(K_/rho);
+        spread(Kr.cdata(), 1, Ksl.primitiveFieldRef().data());
+        forAll(q, i) q[i] = Kr[i]*state_.v[i];
+        spread(reinterpret_cast<const double*>(q.cdata()), 3, reinterpret_cast<double*>(KslUs.primitiveFieldRef().data()));
+        forAll(q, i) q[i] = -fReact_[i]/rho;
+        if (backgroundKernels_)
+        {
+            // The implicit sink Ksl U, spread with the void-fraction kernels, takes K u_s from the
+            // fluid (u_k: U gathered with those kernels), but the particles got K u_f with u_f from
+            // the background kernels. The difference K (u_f - u_k) goes to the fluid explicitly, so
+            // the phases exchange equal and opposite momentum (as CFDEM splits its drag into an
+            // implicit part and an explicit rest).
+            vectorField uKernel(n);
+            gather(voidFraction_.kernels(), reinterpret_cast<const double*>(U.primitiveField().cdata()), 3,
+                   reinterpret_cast<double*>(uKernel.data()));
+            forAll(q, i) q[i] -= Kr[i]*(state_.Uf[i] - uKernel[i]);
+        }
     }
     else
     {
+        // the whole reaction as an explicit force density
+        forAll(q, i) q[i] = -(K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i])/rho;
         if (implicitDrag_)
         {
+            // smoothExchangeFields with implicit drag: the smoothed Ksl enters the fluid equation
+            // as -Ksl (U_new - U) (KslUs = Ksl U). Zero at the current U, so the phases exchange
+            // equal and opposite momentum; it keeps the fluid's response to the drag stable when
+            // dt Ksl/alpha is large (CFDEM's implicit/explicit split of the drag).
             scalarField Kr(K_/rho);
             spread(Kr.cdata(), 1, Ksl.primitiveFieldRef().data());
-            forAll(q, i) q[i] = Kr[i]*state_.v[i];
-            spread(reinterpret_cast<const double*>(q.cdata()), 3, reinterpret_cast<double*>(KslUs.primitiveFieldRef().data()));
-            forAll(q, i) q[i] = -fReact_[i]/rho;
-            if (backgroundKernels_)
-            {
-                // The implicit sink Ksl U, spread with the void-fraction kernels, takes K u_s from the
-                // fluid (u_k: U gathered with those kernels), but the particles got K u_f with u_f from
-                // the background kernels. The difference K (u_f - u_k) goes to the fluid explicitly, so
-                // the phases exchange equal and opposite momentum (as CFDEM splits its drag into an
-                // implicit part and an explicit rest).
-                vectorField uKernel(n);
-                gather(voidFraction_.kernels(), reinterpret_cast<const double*>(U.primitiveField().cdata()), 3,
-                       reinterpret_cast<double*>(uKernel.data()));
-                forAll(q, i) q[i] -= Kr[i]*(state_.Uf[i] - uKernel[i]);
-            }
+            voidFraction_.smoothLikeAlpha(Ksl.primitiveFieldRef().data(), 1);
+            KslUs.primitiveFieldRef() = Ksl.primitiveField()*U.primitiveField();
         }
         else
         {
             Ksl.primitiveFieldRef() = 0;
             KslUs.primitiveFieldRef() = Zero;
-            forAll(q, i) q[i] = -(K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i])/rho;
         }
-        spread(reinterpret_cast<const double*>(q.cdata()), 3, reinterpret_cast<double*>(fFluid.primitiveFieldRef().data()));
     }
+    double* f = reinterpret_cast<double*>(fFluid.primitiveFieldRef().data());
+    spread(reinterpret_cast<const double*>(q.cdata()), 3, f);
+    // smoothExchangeFields: diffusion in flux form keeps sum(f V), so the balance holds as spread
+    if (smoothSources) voidFraction_.smoothLikeAlpha(f, 3);
     timers_.stop();
 
     // output fields (no effect on the flow): particle volume x velocity, spread with the method's
@@ -524,37 +536,6 @@ void coarseDemCoupling::couple
     timers_.stop();
 
     checkExplicitRange(alpha);
-}
-
-void coarseDemCoupling::smoothedSources
-(
-    const volVectorField& U, volScalarField& Ksl, volVectorField& KslUs, volVectorField& fFluid
-)
-{
-    // The fluid gets minus the particles' reacting forces, spread with their kernels and smoothed
-    // like alpha_p. Diffusion in flux form keeps sum(f V), so the phases still exchange equal and
-    // opposite momentum to round-off. With implicit drag the smoothed Ksl also enters the fluid
-    // equation as -Ksl (U_new - U): zero at the current U, it only keeps the fluid's response to
-    // the drag stable when dt Ksl/alpha is large (CFDEM's implicit/explicit split of the drag).
-    const label n = particles_.size();
-    const scalar rho = fluid_.rho;
-    vectorField q(n);
-    forAll(q, i) q[i] = -(K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i])/rho;
-    double* f = reinterpret_cast<double*>(fFluid.primitiveFieldRef().data());
-    spread(reinterpret_cast<const double*>(q.cdata()), 3, f);
-    voidFraction_.smoothLikeAlpha(f, 3);
-    if (implicitDrag_)
-    {
-        scalarField Kr(K_/rho);
-        spread(Kr.cdata(), 1, Ksl.primitiveFieldRef().data());
-        voidFraction_.smoothLikeAlpha(Ksl.primitiveFieldRef().data(), 1);
-        KslUs.primitiveFieldRef() = Ksl.primitiveField()*U.primitiveField();
-    }
-    else
-    {
-        Ksl.primitiveFieldRef() = 0;
-        KslUs.primitiveFieldRef() = Zero;
-    }
 }
 
 void coarseDemCoupling::particleAccelerations()
