@@ -717,85 +717,94 @@ static int one_rank_sum(void *user, double *values, int n)
     return 0;
 }
 
-/* The faces of the periodic halo of a box: cells at xmin and xmax in the exchange's order; the face
- * arrays need 2 ny nz entries each. */
-static cdc_halo periodic_halo_faces(const box_mesh *b, periodic_halo *ph, int32_t *cells, double *coeff, double *vol)
+/* A box of nx x 3 x 3 cubic cells made periodic in x by a halo: the faces of its xmin and xmax
+ * cells, in periodic_exchange's order. The halo is made, not set (cdc_context_set_halo). */
+enum { PB_NY = 3, PB_NZ = 3, PB_NF = 2 * PB_NY * PB_NZ };
+typedef struct {
+    cube_case t;
+    periodic_halo ph;
+    int32_t cells[PB_NF];
+    double coeff[PB_NF], vol[PB_NF];
+    cdc_halo h;
+} periodic_box;
+
+static int periodic_box_open(periodic_box *pb, int nx)
 {
+    if (cube_case_open(&pb->t, nx, PB_NY, PB_NZ)) return -1;
+    const box_mesh *b = &pb->t.b;
     int32_t f = 0;
-    for (int k = 0; k < b->nz; ++k)
-        for (int j = 0; j < b->ny; ++j) {
-            cells[f] = box_mesh_cell(b, 0, j, k);
-            cells[f + 1] = box_mesh_cell(b, b->nx - 1, j, k);
+    for (int k = 0; k < PB_NZ; ++k)
+        for (int j = 0; j < PB_NY; ++j) {
+            pb->cells[f] = box_mesh_cell(b, 0, j, k);
+            pb->cells[f + 1] = box_mesh_cell(b, nx - 1, j, k);
             for (int s = 0; s < 2; ++s) {
-                coeff[f + s] = CUBE_DX * CUBE_DX / CUBE_DX; /* |S_f| / distance between the cell centres */
-                vol[f + s] = b->mesh.cell_volumes[0];
+                pb->coeff[f + s] = CUBE_DX * CUBE_DX / CUBE_DX; /* |S_f| / distance between the cell centres */
+                pb->vol[f + s] = b->mesh.cell_volumes[0];
             }
             f += 2;
         }
-    *ph = (periodic_halo){b, 0};
-    return (cdc_halo){f, cells, coeff, vol, periodic_exchange, one_rank_sum, ph};
+    pb->ph = (periodic_halo){b, 0};
+    pb->h = (cdc_halo){f, pb->cells, pb->coeff, pb->vol, periodic_exchange, one_rank_sum, &pb->ph};
+    return 0;
 }
 
 static void test_diffusion_halo(void)
 {
-    enum { NX = 20, NY = 3, NZ = 3 };
-    cube_case t;
-    if (cube_case_open(&t, NX, NY, NZ)) return;
-    const size_t nc = (size_t)t.b.mesh.n_cells;
-    int32_t cells[2 * NY * NZ];
-    double coeff[2 * NY * NZ], vol[2 * NY * NZ];
-    periodic_halo ph;
-    const cdc_halo h = periodic_halo_faces(&t.b, &ph, cells, coeff, vol);
-    CHECK(cdc_context_set_halo(t.ctx, &h) == CDC_OK, "set halo: %s", cdc_last_error(t.ctx));
+    enum { NX = 20, NY = PB_NY, NZ = PB_NZ };
+    periodic_box pb;
+    if (periodic_box_open(&pb, NX)) return;
+    const cdc_halo h = pb.h;
+    const size_t nc = (size_t)pb.t.b.mesh.n_cells;
+    CHECK(cdc_context_set_halo(pb.t.ctx, &h) == CDC_OK, "set halo: %s", cdc_last_error(pb.t.ctx));
     /* a unit source next to the xmin wall and one in the middle: periodic, so the results must be
      * translations of each other (to the CG tolerance); the wall no longer reflects the first */
     double *a = calloc(nc, sizeof(double)), *m = calloc(nc, sizeof(double));
-    const double V = t.b.mesh.cell_volumes[0];
-    a[box_mesh_cell(&t.b, 0, 1, 1)] = 1.0 / V;
-    m[box_mesh_cell(&t.b, NX / 2, 1, 1)] = 1.0 / V;
+    const double V = pb.t.b.mesh.cell_volumes[0];
+    a[box_mesh_cell(&pb.t.b, 0, 1, 1)] = 1.0 / V;
+    m[box_mesh_cell(&pb.t.b, NX / 2, 1, 1)] = 1.0 / V;
     cdc_diffusion_params prm = {0};
     prm.bandwidth = 4 * CUBE_DX;
     prm.tolerance = 1e-13;
-    CHECK(cdc_diffuse(t.ctx, &prm, a) == CDC_OK && cdc_diffuse(t.ctx, &prm, m) == CDC_OK, "diffuse: %s",
-          cdc_last_error(t.ctx));
+    CHECK(cdc_diffuse(pb.t.ctx, &prm, a) == CDC_OK && cdc_diffuse(pb.t.ctx, &prm, m) == CDC_OK, "diffuse: %s",
+          cdc_last_error(pb.t.ctx));
     double worst = 0, peak = 0, total = 0;
     for (int k = 0; k < NZ; ++k)
         for (int j = 0; j < NY; ++j)
             for (int i = 0; i < NX; ++i) {
-                const double va = a[box_mesh_cell(&t.b, i, j, k)];
-                worst = fmax(worst, fabs(va - m[box_mesh_cell(&t.b, (i + NX / 2) % NX, j, k)]));
+                const double va = a[box_mesh_cell(&pb.t.b, i, j, k)];
+                worst = fmax(worst, fabs(va - m[box_mesh_cell(&pb.t.b, (i + NX / 2) % NX, j, k)]));
                 peak = fmax(peak, va);
                 total += va * V;
             }
-    CHECK(ph.calls > 0, "the halo exchange was never called");
+    CHECK(pb.ph.calls > 0, "the halo exchange was never called");
     CHECK(worst <= 1e-9 * peak, "periodic diffusion: wall source vs middle source differ by %.2e of the peak",
           worst / peak);
     CHECK(fabs(total - 1) <= 1e-13, "conservation through the halo %.2e", fabs(total - 1));
     /* without the halo the wall is zero-flux: the wall source's result is no translation */
-    CHECK(cdc_context_set_halo(t.ctx, NULL) == CDC_OK, "clear halo");
+    CHECK(cdc_context_set_halo(pb.t.ctx, NULL) == CDC_OK, "clear halo");
     memset(a, 0, nc * sizeof *a);
-    a[box_mesh_cell(&t.b, 0, 1, 1)] = 1.0 / V;
-    CHECK(cdc_diffuse(t.ctx, &prm, a) == CDC_OK, "diffuse without halo");
-    CHECK(fabs(a[box_mesh_cell(&t.b, 0, 1, 1)] - m[box_mesh_cell(&t.b, NX / 2, 1, 1)]) > 1e-3 * peak,
+    a[box_mesh_cell(&pb.t.b, 0, 1, 1)] = 1.0 / V;
+    CHECK(cdc_diffuse(pb.t.ctx, &prm, a) == CDC_OK, "diffuse without halo");
+    CHECK(fabs(a[box_mesh_cell(&pb.t.b, 0, 1, 1)] - m[box_mesh_cell(&pb.t.b, NX / 2, 1, 1)]) > 1e-3 * peak,
           "without the halo the wall source should differ from the periodic result");
     /* size-aware diffusion forms its classes per rank: refused across ranks */
-    CHECK(cdc_context_set_halo(t.ctx, &h) == CDC_OK, "set halo again");
+    CHECK(cdc_context_set_halo(pb.t.ctx, &h) == CDC_OK, "set halo again");
     double px[3] = {0.05, 0.015, 0.015}, pr[1] = {0.004};
     cdc_particles p = {1, px, pr, NULL, NULL};
     cdc_kernels *k = NULL;
     cdc_diffusion_params base = {0};
     int ncls = 0;
-    CHECK(cdc_kernels_create(t.ctx, "centre", NULL, &k) == CDC_OK && cdc_kernels_build(k, &p) == CDC_OK, "kernels");
-    CHECK(cdc_alpha_p_diffused_by_size(t.ctx, k, &p, 6.0, 1.1, &base, a, &ncls) == CDC_ERR_UNSUPPORTED,
+    CHECK(cdc_kernels_create(pb.t.ctx, "centre", NULL, &k) == CDC_OK && cdc_kernels_build(k, &p) == CDC_OK, "kernels");
+    CHECK(cdc_alpha_p_diffused_by_size(pb.t.ctx, k, &p, 6.0, 1.1, &base, a, &ncls) == CDC_ERR_UNSUPPORTED,
           "size-aware diffusion with a halo was not refused");
     cdc_kernels_destroy(k);
     /* bad halo input is refused with a message */
     cdc_halo bad = h;
     bad.exchange = NULL;
-    CHECK(cdc_context_set_halo(t.ctx, &bad) == CDC_ERR_ARGUMENT, "halo without exchange accepted");
+    CHECK(cdc_context_set_halo(pb.t.ctx, &bad) == CDC_ERR_ARGUMENT, "halo without exchange accepted");
     free(a);
     free(m);
-    cube_case_close(&t);
+    cube_case_close(&pb.t);
 }
 
 static void test_size_aware_diffusion(void)
@@ -876,61 +885,58 @@ static void test_limiter(void)
  * (to round-off); the total is conserved to round-off and no cell stays above the limit. */
 static void test_limiter_halo(void)
 {
-    enum { NX = 12, NY = 3, NZ = 3 };
-    cube_case t;
-    if (cube_case_open(&t, NX, NY, NZ)) return;
-    const size_t nc = (size_t)t.b.mesh.n_cells;
-    int32_t cells[2 * NY * NZ];
-    double coeff[2 * NY * NZ], vol[2 * NY * NZ];
-    periodic_halo ph;
-    const cdc_halo h = periodic_halo_faces(&t.b, &ph, cells, coeff, vol);
+    enum { NX = 12, NY = PB_NY, NZ = PB_NZ };
+    periodic_box pb;
+    if (periodic_box_open(&pb, NX)) return;
+    const cdc_halo h = pb.h;
+    const size_t nc = (size_t)pb.t.b.mesh.n_cells;
     double *a = calloc(nc, sizeof(double)), *m = calloc(nc, sizeof(double)), *w = calloc(nc, sizeof(double));
     /* a full slab two cells thick, up to 1.3: its excess cannot stay in its own layer */
     for (int k = 0; k < NZ; ++k)
         for (int j = 0; j < NY; ++j)
             for (int i = 0; i < 2; ++i) {
                 const double v = 0.9 + 0.4 * ((i + j + k) % 2);
-                a[box_mesh_cell(&t.b, i, j, k)] = v;
-                m[box_mesh_cell(&t.b, i + NX / 2, j, k)] = v;
+                a[box_mesh_cell(&pb.t.b, i, j, k)] = v;
+                m[box_mesh_cell(&pb.t.b, i + NX / 2, j, k)] = v;
             }
     memcpy(w, a, nc * sizeof *w);
-    const double V = t.b.mesh.cell_volumes[0];
+    const double V = pb.t.b.mesh.cell_volumes[0];
     double before = 0;
     for (size_t c = 0; c < nc; ++c) before += a[c] * V;
-    CHECK(cdc_context_set_halo(t.ctx, &h) == CDC_OK, "set halo: %s", cdc_last_error(t.ctx));
+    CHECK(cdc_context_set_halo(pb.t.ctx, &h) == CDC_OK, "set halo: %s", cdc_last_error(pb.t.ctx));
     double moved = 0;
     int32_t nlim = 0;
-    CHECK(cdc_limit_packing(t.ctx, 0.6, 200, a, &moved, &nlim) == CDC_OK &&
-              cdc_limit_packing(t.ctx, 0.6, 200, m, NULL, NULL) == CDC_OK,
-          "limit: %s", cdc_last_error(t.ctx));
+    CHECK(cdc_limit_packing(pb.t.ctx, 0.6, 200, a, &moved, &nlim) == CDC_OK &&
+              cdc_limit_packing(pb.t.ctx, 0.6, 200, m, NULL, NULL) == CDC_OK,
+          "limit: %s", cdc_last_error(pb.t.ctx));
     double worst = 0, after = 0, mx = 0, across = 0;
     for (int k = 0; k < NZ; ++k)
         for (int j = 0; j < NY; ++j)
             for (int i = 0; i < NX; ++i) {
-                const double va = a[box_mesh_cell(&t.b, i, j, k)];
-                worst = fmax(worst, fabs(va - m[box_mesh_cell(&t.b, (i + NX / 2) % NX, j, k)]));
+                const double va = a[box_mesh_cell(&pb.t.b, i, j, k)];
+                worst = fmax(worst, fabs(va - m[box_mesh_cell(&pb.t.b, (i + NX / 2) % NX, j, k)]));
                 after += va * V;
                 mx = fmax(mx, va);
                 if (i == NX - 1) across += va;
             }
-    CHECK(ph.calls > 0, "the halo exchange was never called");
+    CHECK(pb.ph.calls > 0, "the halo exchange was never called");
     CHECK(across > 0, "no volume crossed the halo into the xmax cells");
     CHECK(worst <= 1e-12, "periodic limiter: wall block vs middle block differ by %.2e", worst);
     CHECK(fabs(after - before) <= 1e-14 * before, "conservation through the halo %.2e", fabs(after - before) / before);
     CHECK(mx <= 0.6 * (1 + 1e-12), "max after limiting %.15g", mx);
     CHECK(nlim == 2 * NY * NZ && moved > 0, "limited %d cells, moved %g", (int)nlim, moved);
     printf("    periodic halo: wall vs middle block %.1e, conservation %.1e, %d exchanges\n", worst,
-           fabs(after - before) / before, ph.calls);
+           fabs(after - before) / before, pb.ph.calls);
     /* without the halo the wall is closed: the same block gives another field */
-    CHECK(cdc_context_set_halo(t.ctx, NULL) == CDC_OK, "clear halo");
-    CHECK(cdc_limit_packing(t.ctx, 0.6, 200, w, NULL, NULL) == CDC_OK, "limit without halo");
+    CHECK(cdc_context_set_halo(pb.t.ctx, NULL) == CDC_OK, "clear halo");
+    CHECK(cdc_limit_packing(pb.t.ctx, 0.6, 200, w, NULL, NULL) == CDC_OK, "limit without halo");
     double diff = 0;
     for (size_t c = 0; c < nc; ++c) diff = fmax(diff, fabs(w[c] - a[c]));
     CHECK(diff > 1e-3, "without the halo the wall block should be limited differently (%.2e)", diff);
     free(a);
     free(m);
     free(w);
-    cube_case_close(&t);
+    cube_case_close(&pb.t);
 }
 
 /* Two "ranks" in two threads, run in lockstep: a box of 16 x 4 x 4 cells split at i = 8 into two
