@@ -52,6 +52,7 @@ FixCoupleCoarse::FixCoupleCoarse(LAMMPS *lmp, int narg, char **arg) :
   npull_(0),
   npush_(0)
 {
+  for (int d = 0; d < 3; d++) impulse_[d] = last_applied_[d] = 0.0;
   // arg[0..2] = ID group-ID couple/coarse; then keyword/value pairs
   int iarg = 3;
   while (iarg < narg) {
@@ -135,15 +136,37 @@ void FixCoupleCoarse::init()
    the first step on, like every post_force fix
 ------------------------------------------------------------------------- */
 
-void FixCoupleCoarse::setup(int vflag)
+void FixCoupleCoarse::setup(int)
 {
-  post_force(vflag);
+  // the setup's force gives the first half-kick of the run's first step (velocity Verlet), which
+  // post_force() of that step counts
+  add_coupling_forces(last_applied_);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   post_force: add the coupling force and count the impulse it gives. Velocity
+   Verlet uses each force evaluation for the second half-kick of its step and the
+   first half-kick of the next one, so the impulse of step k is
+   dt/2 (sum of the forces of the previous evaluation + sum of this one);
+   the previous evaluation is the setup's for the first step of a run.
+------------------------------------------------------------------------- */
 
 void FixCoupleCoarse::post_force(int)
 {
+  double sum[3];
+  add_coupling_forces(sum);
+  const double half_dt = 0.5 * update->dt;
+  for (int d = 0; d < 3; d++) {
+    impulse_[d] += half_dt * (last_applied_[d] + sum[d]);
+    last_applied_[d] = sum[d];
+  }
+}
+
+// adds the coupling force to every local particle of the group (nothing with apply no) and
+// returns the sum of what it added
+void FixCoupleCoarse::add_coupling_forces(double sum[3])
+{
+  sum[0] = sum[1] = sum[2] = 0.0;
   if (!apply_) return;
   double **f = atom->f;
   int *mask = atom->mask;
@@ -152,9 +175,10 @@ void FixCoupleCoarse::post_force(int)
     if (mask[i] & groupbit) {
       double fi[3];
       coupling_force(i, fi);
-      f[i][0] += fi[0];
-      f[i][1] += fi[1];
-      f[i][2] += fi[2];
+      for (int d = 0; d < 3; d++) {
+        f[i][d] += fi[d];
+        sum[d] += fi[d];
+      }
     }
   }
 }
@@ -315,6 +339,7 @@ void FixCoupleCoarse::push_forces(const double *f)
     k++;
   }
   npush_++;
+  impulse_[0] = impulse_[1] = impulse_[2] = 0.0;   // these forces start a new impulse count
 }
 
 void FixCoupleCoarse::push_drag(const double *K, const double *ufluid)
@@ -342,6 +367,13 @@ void FixCoupleCoarse::coupling_force(int i, double out[3]) const
   out[0] = c[0] + c[3]*(c[4] - v[0]);
   out[1] = c[1] + c[3]*(c[5] - v[1]);
   out[2] = c[2] + c[3]*(c[6] - v[2]);
+}
+
+void FixCoupleCoarse::coupling_impulse(double out[3]) const
+{
+  out[0] = impulse_[0];
+  out[1] = impulse_[1];
+  out[2] = impulse_[2];
 }
 
 void FixCoupleCoarse::total_force(double out[3]) const

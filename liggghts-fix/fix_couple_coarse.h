@@ -89,6 +89,11 @@ in the fix group, in LIGGGHTS' local atom order at the time of the call):
    void total_force(double out[3]) const;
         sum of the coupling force (stored force + drag part at the current
         velocities) over the local particles (no MPI communication).
+   void coupling_impulse(double out[3]) const;
+        impulse (force x time) the coupling forces gave the local particles
+        since the last push_forces(), as velocity Verlet applies them: each
+        force evaluation counts for the half-steps that use it (no MPI
+        communication; the sum over the ranks is the global impulse).
 
 Restrictions:
 
@@ -148,6 +153,7 @@ class FixCoupleCoarse : public Fix {
   void push_forces(const double *f);
   void push_drag(const double *K, const double *ufluid);
   void total_force(double out[3]) const;
+  void coupling_impulse(double out[3]) const;
 
   // number of pull() and push_forces() calls so far (for diagnostics)
   long long n_pulls() const { return npull_; }
@@ -167,8 +173,14 @@ class FixCoupleCoarse : public Fix {
   bigint pull_step_;     // update->ntimestep at the last pull (-1: none)
   long long npull_, npush_;
 
+  // impulse given since the last push_forces(), and the sum of the coupling forces of the last
+  // evaluation (the first half-kick of the next step uses them)
+  double impulse_[3];
+  double last_applied_[3];
+
   int in_group(int i) const;
   void coupling_force(int i, double out[3]) const;   // force + K (u_fluid - v)
+  void add_coupling_forces(double sum[3]);
 };
 
 }

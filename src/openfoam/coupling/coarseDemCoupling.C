@@ -236,7 +236,33 @@ void coarseDemCoupling::evolveDem()
 {
     timers_.start(stageTimers::dem);
     dem_->run(couplingInterval_);
+    segmentSeconds_ = couplingInterval_*dem_->timestep();
     timers_.stop();
+}
+
+Foam::vector coarseDemCoupling::fluidMomentumSource(const volVectorField& U) const
+{
+    const scalarField& V = mesh_.V();
+    return fluid_.rho*gSum
+    (
+        (fFluid.primitiveField() - Ksl.primitiveField()*U.primitiveField() + KslUs.primitiveField())*V
+    );
+}
+
+void coarseDemCoupling::compareExchangeInTime(const volVectorField& U)
+{
+    // before the exchange fields are replaced: U is the fluid's velocity after the step that used
+    // them, and the DEM has just run the segment that used them
+    if (!exchangePending_) return;
+    const vector particles =
+        returnReduce(dem_->couplingImpulse(), sumOp<vector>()) - segmentSeconds_*nonReacting_;
+    const vector fluid = exchangeDt_*fluidMomentumSource(U);
+    const scalar scale = exchangeDt_*forceScale_;
+    exchangeLastRel_ = scale > 0 ? mag(particles + fluid)/scale : 0;
+    exchangeMaxRel_ = max(exchangeMaxRel_, exchangeLastRel_);
+    exchangeNet_ += particles + fluid;
+    exchangeGross_ += scale;
+    ++nExchangesCompared_;
 }
 
 void coarseDemCoupling::sampleFluid
@@ -327,6 +353,8 @@ void coarseDemCoupling::couple
 )
 {
     const scalar pi = constant::mathematical::pi;
+    compareExchangeInTime(U);
+    ++nCouplings_;
     dem_->pull(particles_);
     const label n = particles_.size();
     nParticles_ = returnReduce(n, sumOp<label>());
@@ -421,6 +449,7 @@ void coarseDemCoupling::couple
     dragUf_.resize(implicitParticleDrag_ ? 3*n : 0);
     forceScale_ = 0;
     vector fParticles(Zero);
+    nonReacting_ = Zero;
     for (label i = 0; i < n; ++i)
     {
         const vector f = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
@@ -432,6 +461,7 @@ void coarseDemCoupling::couple
             for (direction d = 0; d < 3; ++d) dragUf_[3*i + d] = state_.Uf[i][d];
         }
         fParticles += K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i];
+        nonReacting_ += fOther_[i] - fReact_[i];
         forceScale_ += mag(f);
     }
     timers_.stop();
@@ -441,12 +471,15 @@ void coarseDemCoupling::couple
     if (keepRestartForces_)
     {
         keepRestartForces_ = false;   // the balance line of this step describes forces not applied
+        exchangePending_ = false;
     }
     else
     {
         dem_->push(force_);
         if (implicitParticleDrag_) dem_->pushDrag(dragK_, dragUf_);
+        exchangePending_ = nCouplings_ > 1;
     }
+    exchangeDt_ = mesh_.time().deltaTValue();
     const scalar rho = fluid_.rho;
     const bool smoothSources = voidFraction_.smoothsExchangeFields();
     vectorField q(n);
@@ -525,12 +558,9 @@ void coarseDemCoupling::couple
     for (const double v : volume_) vp += v;
     solidVolumeParticles_ = returnReduce(vp, sumOp<scalar>());
     solidVolumeCells_ = gSum(alphaP.primitiveField()*V);
-    const vectorField fluidGets
-    (
-        rho*(fFluid.primitiveField() - Ksl.primitiveField()*U.primitiveField() + KslUs.primitiveField())*V
-    );
-    const vector fluidTotal = gSum(fluidGets);
+    const vector fluidTotal = fluidMomentumSource(U);
     reduce(fParticles, sumOp<vector>());
+    reduce(nonReacting_, sumOp<vector>());
     reduce(forceScale_, sumOp<scalar>());
     momentumImbalance_ = mag(fluidTotal + fParticles);
     timers_.stop();
@@ -692,6 +722,10 @@ void coarseDemCoupling::report(Ostream& os) const
             << " cells > 1)";
     }
     os  << endl;
+    os  << "Exchange in time: " << nExchangesCompared_ << " couplings compared, |particles' + fluid's"
+        << " impulse| of a coupling step last " << exchangeLastRel_ << " max " << exchangeMaxRel_
+        << " x CFD step x force; since the start net " << exchangeNet_ << " N s of " << exchangeGross_
+        << " N s" << endl;
 }
 
 } // End namespace Foam

@@ -142,3 +142,10 @@ void Foam::liggghtsDem::pushDrag(const std::vector<double>& K, const std::vector
 {
     fix_->push_drag(K.data(), uf.data());
 }
+
+Foam::vector Foam::liggghtsDem::couplingImpulse() const
+{
+    double j[3];
+    fix_->coupling_impulse(j);
+    return vector(j[0], j[1], j[2]);
+}

@@ -12,6 +12,9 @@
 //   - even IDs (no force):    free fall, z = z0 - g t^2 / 2 (exact for velocity Verlet);
 //   - total_force() and the fix's global vector equal the sum of pushed forces;
 //   - with 2 or more ranks, some forced particles changed rank (so migration was exercised).
+// Then a drag phase: every particle gets K (u_f - v) with its current velocity (push_drag) for two
+// runs (the first with setup, the second without); coupling_impulse() must equal the particles'
+// change of momentum less the weight's impulse (what velocity Verlet actually gave them).
 // Prints PASS/FAIL lines and "N passed, N failed"; exit status 0 only if all passed.
 
 #include <mpi.h>
@@ -183,6 +186,52 @@ int main(int argc, char **argv)
         std::snprintf(msg, sizeof(msg),
                       "%d particles with a pushed force changed rank during the run (force followed them)", iglob[2]);
         check(iglob[2] > 0, msg);
+    }
+
+    // ---- drag phase: the impulse the fix counts is the momentum the particles got
+    {
+        const double tau = 2.0e-3;                        // particle response time m/K (s)
+        const double uf[3] = {0.2, -0.1, 0.5};            // fluid velocity at every particle (m/s)
+        const int nrun = 150;
+        std::vector<double> zero(3 * p.n, 0.0), K(p.n), u(3 * p.n);
+        double local[4] = {0, 0, 0, 0};                   // momentum before (3), weight (1)
+        for (int i = 0; i < p.n; i++) {
+            const double m = mass(p.r[i], p.rho[i]);
+            K[i] = m / tau;
+            for (int d = 0; d < 3; d++) {
+                u[3 * i + d] = uf[d];
+                local[d] += m * p.v[3 * i + d];
+            }
+            local[3] += m * g;
+        }
+        fix->push_forces(zero.data());
+        fix->push_drag(K.data(), u.data());
+        double before[4];
+        MPI_Allreduce(local, before, 4, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+        std::snprintf(cmd, sizeof(cmd), "run %d pre yes post no", nrun);
+        lmp->input->one(cmd);
+        std::snprintf(cmd, sizeof(cmd), "run %d pre no post no", nrun);
+        lmp->input->one(cmd);
+        p = pull(fix);
+        double after_local[6] = {0, 0, 0, 0, 0, 0}, after[6];
+        for (int i = 0; i < p.n; i++) {
+            const double m = mass(p.r[i], p.rho[i]);
+            for (int d = 0; d < 3; d++) after_local[d] += m * p.v[3 * i + d];
+        }
+        fix->coupling_impulse(after_local + 3);
+        MPI_Allreduce(after_local, after, 6, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+        const double T = 2 * nrun * dt;
+        double err = 0.0, scale = 0.0;
+        for (int d = 0; d < 3; d++) {
+            const double got = after[d] - before[d] + (d == 2 ? before[3] * T : 0.0);
+            err = std::fmax(err, std::fabs(got - after[3 + d]));
+            scale = std::fmax(scale, std::fabs(got));
+        }
+        std::snprintf(msg, sizeof(msg),
+                      "drag K (u_f - v) for 2 x %d DEM steps: coupling_impulse() (%.6e %.6e %.6e) N s"
+                      " equals the particles' momentum change less the weight's impulse to %.1e of it",
+                      nrun, after[3], after[4], after[5], err / scale);
+        check(scale > 0 && err <= 1e-12 * scale, msg);
     }
 
     if (rank == 0) std::printf("liggghts_smoke (np=%d): %d passed, %d failed\n", nprocs, npass, nfail);

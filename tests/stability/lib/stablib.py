@@ -1,6 +1,7 @@
 """stablib.py -- reading what a coarseDemFoam run left behind, for the stability suite.
 
     coupling_lines(case)      the "Coupling: ..." balance lines of log.coarseDemFoam as dicts
+    exchange_lines(case)      the "Exchange in time: ..." lines (particles' vs fluid's impulse) as dicts
     write_times(case)         written times (serial or processor0), sorted
     read_scalar_field(case, time, name)   internal field values (all processors concatenated)
     read_vector_field(case, time, name)   list of (x, y, z)
@@ -16,6 +17,11 @@ COUPLING = re.compile(
     r" \(rel\. err " + NUM + r"\), momentum imbalance " + NUM + r" N of " + NUM +
     r" N, limiter moved " + NUM + r" m3 in (\d+) cells")
 
+EXCHANGE = re.compile(
+    r"Exchange in time: (\d+) couplings compared, \|particles' \+ fluid's impulse\| of a coupling step last " +
+    NUM + r" max " + NUM + r" x CFD step x force; since the start net \(" + NUM + r" " + NUM + r" " + NUM +
+    r"\) N s of " + NUM + r" N s")
+
 
 def fnum(s):
     return float(s)
@@ -30,6 +36,18 @@ def coupling_lines(case, log="log.coarseDemFoam"):
                 g = m.groups()
                 out.append(dict(n=int(g[0]), vp=fnum(g[1]), vc=fnum(g[2]), rel=fnum(g[3]), M=fnum(g[4]),
                                 F=fnum(g[5]), moved=fnum(g[6]), ncells=int(g[7]), end=line.startswith("End:")))
+    return out
+
+
+def exchange_lines(case, log="log.coarseDemFoam"):
+    out = []
+    with open(os.path.join(case, log), errors="replace") as f:
+        for line in f:
+            m = EXCHANGE.search(line)
+            if m:
+                g = m.groups()
+                out.append(dict(n=int(g[0]), last=fnum(g[1]), max=fnum(g[2]),
+                                net=(fnum(g[3]), fnum(g[4]), fnum(g[5])), gross=fnum(g[6])))
     return out
 
 
