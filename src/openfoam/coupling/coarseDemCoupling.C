@@ -257,11 +257,15 @@ void coarseDemCoupling::compareExchangeInTime(const volVectorField& U)
     const vector particles =
         returnReduce(dem_->couplingImpulse(), sumOp<vector>()) - segmentSeconds_*nonReacting_;
     const vector fluid = exchangeDt_*fluidMomentumSource(U);
-    const scalar scale = exchangeDt_*forceScale_;
+    // relative to the larger of the step's exchange at the coupling (CFD step x sum |f|) and either
+    // phase's impulse: at a start from rest the forces at the coupling are near zero while the fluid's
+    // implicit drag at its new velocity is not, and the difference is then the whole impulse (1)
+    const scalar exchanged = exchangeDt_*forceScale_;
+    const scalar scale = max(exchanged, max(mag(particles), mag(fluid)));
     exchangeLastRel_ = scale > 0 ? mag(particles + fluid)/scale : 0;
     exchangeMaxRel_ = max(exchangeMaxRel_, exchangeLastRel_);
     exchangeNet_ += particles + fluid;
-    exchangeGross_ += scale;
+    exchangeGross_ += exchanged;
     ++nExchangesCompared_;
 }
 
@@ -724,7 +728,7 @@ void coarseDemCoupling::report(Ostream& os) const
     os  << endl;
     os  << "Exchange in time: " << nExchangesCompared_ << " couplings compared, |particles' + fluid's"
         << " impulse| of a coupling step last " << exchangeLastRel_ << " max " << exchangeMaxRel_
-        << " x CFD step x force; since the start net " << exchangeNet_ << " N s of " << exchangeGross_
+        << " x exchange; since the start net " << exchangeNet_ << " N s of " << exchangeGross_
         << " N s" << endl;
 }
 

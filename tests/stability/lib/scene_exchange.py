@@ -9,8 +9,9 @@ over the CFD step that follows it and on the particles over the next DEM segment
 compares the two ("Exchange in time:" lines: the DEM's counted impulse, from fix couple/coarse,
 against the fluid's source at its velocity after the step, times the step).
   explicit case (implicitDrag false, implicitParticleDrag false): each phase gets a constant force over
-    the step, so the impulses must cancel to round-off: largest |particles + fluid| <= 1e-12 x CFD step
-    x sum |f|, over every coupling but the run's first (which acts on the particles only).
+    the step, so the impulses must cancel to round-off: largest |particles + fluid| <= 1e-12 x the
+    exchange (the larger of CFD step x sum |f| and either impulse), over every coupling but the run's
+    first (which acts on the particles only).
   implicit case (the defaults): the particles' drag follows their velocity within the step and the
     fluid's follows its new velocity, so the impulses differ by what the velocities changed in a step:
     measured and reported, asserted only to be finite and compared every step.
@@ -48,7 +49,7 @@ def measure(case, label, problems):
     if not all(math.isfinite(v) for v in (e["max"], e["gross"]) + e["net"]):
         problems.append("%s run: non-finite exchange measures" % label)
     net = math.sqrt(sum(v * v for v in e["net"]))
-    text = ("%s: %d couplings compared, largest |particles + fluid| %.1e x CFD step x force, net over the run "
+    text = ("%s: %d couplings compared, largest |particles + fluid| %.1e x exchange, net over the run "
             "%.2e N s of %.2e N s exchanged (%.1e)" % (label, e["n"], e["max"], net, e["gross"],
                                                         net / e["gross"] if e["gross"] > 0 else float("nan")))
     return e, text
@@ -60,7 +61,7 @@ def main():
     ee, te = measure(explicit, "explicit", problems)
     ei, ti = measure(implicit, "implicit", problems)
     if ee is not None and not ee["max"] <= 1e-12:
-        problems.append("explicit coupling: impulses differ by %.2e x CFD step x force > 1e-12" % ee["max"])
+        problems.append("explicit coupling: impulses differ by %.2e x exchange > 1e-12" % ee["max"])
     line = "%s: %s; %s" % (scene, te, ti)
     if problems:
         print("FAIL " + line + "; " + "; ".join(problems))

@@ -19,7 +19,7 @@ COUPLING = re.compile(
 
 EXCHANGE = re.compile(
     r"Exchange in time: (\d+) couplings compared, \|particles' \+ fluid's impulse\| of a coupling step last " +
-    NUM + r" max " + NUM + r" x CFD step x force; since the start net \(" + NUM + r" " + NUM + r" " + NUM +
+    NUM + r" max " + NUM + r" x exchange; since the start net \(" + NUM + r" " + NUM + r" " + NUM +
     r"\) N s of " + NUM + r" N s")
 
 
