@@ -27,28 +27,22 @@ def fnum(s):
     return float(s)
 
 
-def coupling_lines(case, log="log.coarseDemFoam"):
-    out = []
+def _matches(case, pattern, log):
+    """(match groups, line) of every line of the log that matches pattern"""
     with open(os.path.join(case, log), errors="replace") as f:
-        for line in f:
-            m = COUPLING.search(line)
-            if m:
-                g = m.groups()
-                out.append(dict(n=int(g[0]), vp=fnum(g[1]), vc=fnum(g[2]), rel=fnum(g[3]), M=fnum(g[4]),
-                                F=fnum(g[5]), moved=fnum(g[6]), ncells=int(g[7]), end=line.startswith("End:")))
-    return out
+        return [(m.groups(), line) for line in f for m in [pattern.search(line)] if m]
+
+
+def coupling_lines(case, log="log.coarseDemFoam"):
+    return [dict(n=int(g[0]), vp=fnum(g[1]), vc=fnum(g[2]), rel=fnum(g[3]), M=fnum(g[4]), F=fnum(g[5]),
+                 moved=fnum(g[6]), ncells=int(g[7]), end=line.startswith("End:"))
+            for g, line in _matches(case, COUPLING, log)]
 
 
 def exchange_lines(case, log="log.coarseDemFoam"):
-    out = []
-    with open(os.path.join(case, log), errors="replace") as f:
-        for line in f:
-            m = EXCHANGE.search(line)
-            if m:
-                g = m.groups()
-                out.append(dict(n=int(g[0]), last=fnum(g[1]), max=fnum(g[2]),
-                                net=(fnum(g[3]), fnum(g[4]), fnum(g[5])), gross=fnum(g[6])))
-    return out
+    return [dict(n=int(g[0]), last=fnum(g[1]), max=fnum(g[2]), net=(fnum(g[3]), fnum(g[4]), fnum(g[5])),
+                 gross=fnum(g[6]))
+            for g, _ in _matches(case, EXCHANGE, log)]
 
 
 def params(case):
