@@ -21,15 +21,7 @@ import math, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stablib
-
-
-def steps(case):
-    n = 0
-    with open(os.path.join(case, "log.coarseDemFoam"), errors="replace") as f:
-        for line in f:
-            if line.startswith("Time = "):
-                n += 1
-    return n
+from scene_drag import progress
 
 
 def measure(case, label, problems):
@@ -43,7 +35,7 @@ def measure(case, label, problems):
         problems.append("%s run: no 'Exchange in time' line" % label)
         return None, summary
     e = ex[-1]
-    n = steps(case)
+    n = progress(case)[0]   # CFD steps run
     if e["n"] != n - 1:
         problems.append("%s run: %d couplings compared in %d CFD steps (expected %d)" % (label, e["n"], n, n - 1))
     if not all(math.isfinite(v) for v in (e["max"], e["gross"]) + e["net"]):
