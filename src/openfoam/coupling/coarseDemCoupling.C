@@ -1,6 +1,7 @@
 #include "coarseDemCoupling.H"
 #include "demTimeStepCheck.H"
 #include "fvc.H"
+#include "noAliasFvc.H"
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
 
@@ -293,7 +294,7 @@ void coarseDemCoupling::sampleFluid
     {
         const volVectorField divTau
         (
-            fvc::laplacian(nuEff, U) + fvc::div(nuEff*dev2(T(fvc::grad(U))))
+            fvc::laplacian(nuEff, U) + fvc::div(nuEff*noAliasFvc::dev2GradUT(U))
         );
         gatherVector(divTau.primitiveField(), state_.divTau);
     }
@@ -303,7 +304,7 @@ void coarseDemCoupling::sampleFluid
     }
     if (needs_ & forceModel::needVorticity)
     {
-        gatherVector(fvc::curl(U)().primitiveField(), state_.vorticity);
+        gatherVector(noAliasFvc::curl(U)().primitiveField(), state_.vorticity);
     }
 }
 

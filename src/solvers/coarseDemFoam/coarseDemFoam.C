@@ -24,6 +24,7 @@ Description
 #include "pimpleControl.H"
 #include "fixedFluxPressureFvPatchScalarField.H"
 #include "coarseDemCoupling.H"
+#include "noAliasFvc.H"
 
 #include <chrono>
 
