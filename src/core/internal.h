@@ -38,7 +38,13 @@ void cdc_dvec_free(cdc_dvec *a);
 
 /* A wall plane near a particle: points x with dot(x - origin, normal) = 0; normal points out. */
 typedef struct { double origin[3]; double normal[3]; } cdc_plane;
-#define CDC_MAX_PLANES 6   /* the walls of a box; more distinct planes in reach is an error */
+#define CDC_MAX_WALL_FACETS 64 /* distinct wall-face planes within a kernel's reach (a faceted curved
+                                  * wall gives one per facet); more is an error */
+#define CDC_MAX_PLANES 6   /* mirror planes kept from those facets: at most the walls of a box */
+/* Facets whose normals are closer than this (cosine of 60 degrees) belong to one wall surface, which
+ * is mirrored across its nearest facet only; walls meeting at a sharper angle (box edges, the
+ * corner of a column's wall with its bottom) are mirrored across each. */
+#define CDC_SAME_WALL_COS 0.5
 #define CDC_MAX_IMAGES 64  /* mirror images of one particle (a box corner in a thin slab has ~8) */
 #define CDC_N_SCRATCH 8
 /* Relative slack on "within radius" tests: on regular lattices cell centres sit exactly on a
@@ -134,9 +140,10 @@ const cdc_method *cdc_find_method(const char *name);
 
 /* Cells whose centre lies within `radius` of x, found by flood fill from the start cell across
  * faces. The start cell is included too (the host of a particle), unless seed_only (a ghost's
- * start cell, included only if it qualifies). When planes != NULL, wall faces of visited cells
- * closer than `radius` to x are collected as mirror planes (deduplicated); more than CDC_MAX_PLANES
- * distinct planes (curved or stepped walls) is CDC_ERR_UNSUPPORTED. */
+ * start cell, included only if it qualifies). When planes != NULL (room for CDC_MAX_WALL_FACETS),
+ * the planes of the wall faces of visited cells closer than `radius` to x are collected
+ * (deduplicated); more than CDC_MAX_WALL_FACETS distinct planes is CDC_ERR_UNSUPPORTED.
+ * cdc_nearest_wall_planes() then keeps the mirror planes among them. */
 cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t start, int seed_only, double radius,
                             cdc_ivec *cells, cdc_plane *planes, int *n_planes);
 
@@ -147,6 +154,15 @@ cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t st
 /* The local cell whose bounding box is nearest to x, if within `reach` (else -1): where the
  * searches for a ghost particle start. */
 cdc_status cdc_nearest_cell(cdc_context *ctx, const double x[3], double reach, int32_t *cell);
+
+/* The mirror planes among the wall facets near x, in place: nearest first, a facet is kept unless
+ * its normal is within 60 degrees (CDC_SAME_WALL_COS) of a kept one's, i.e. each wall surface is
+ * mirrored across the facet nearest to x only: a faceted curved wall (a cylinder on an O-grid) acts
+ * as its tangent plane there, a box keeps all its planes. Ties in distance are broken by the
+ * normal's components, so the result does not depend on the order the facets were found in.
+ * Returns CDC_MAX_PLANES + 1 if more would be kept (a wall with more than six sharp corners
+ * within reach), else the count kept. */
+int cdc_nearest_wall_planes(const double x[3], cdc_plane *planes, int n_planes);
 
 /* Images of x across the wall planes (method of images), x itself first: every point reached by
  * reflecting x or an image across a plane, kept while it lies less than `reach` beyond every plane

@@ -34,7 +34,7 @@ static double plane_offset(const cdc_plane *p, const double x[3])
 }
 
 /* Add the plane of wall face f if it is within `radius` of x and not yet known; -1 if it would be
- * one more than CDC_MAX_PLANES. */
+ * one more than CDC_MAX_WALL_FACETS. */
 static int collect_plane(const cdc_mesh *m, int32_t f, const double x[3], double radius, cdc_plane *planes,
                          int *n_planes)
 {
@@ -48,7 +48,7 @@ static int collect_plane(const cdc_mesh *m, int32_t f, const double x[3], double
         const double dn = n[0] * q->normal[0] + n[1] * q->normal[1] + n[2] * q->normal[2];
         if (dn > 1.0 - 1e-9 && fabs(plane_offset(q, C)) <= 1e-9 * radius) return 0; /* same plane */
     }
-    if (*n_planes >= CDC_MAX_PLANES) return -1;
+    if (*n_planes >= CDC_MAX_WALL_FACETS) return -1;
     cdc_plane *p = planes + (*n_planes)++;
     for (int d = 0; d < 3; ++d) {
         p->origin[d] = C[d];
@@ -82,9 +82,10 @@ static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, int s
                     m->boundary_face_kind[f - m->n_internal_faces] == CDC_FACE_WALL &&
                     collect_plane(m, f, x, radius, planes, n_planes))
                     return cdc_fail(ctx, CDC_ERR_UNSUPPORTED,
-                                    "wallMirror: more than %d distinct wall planes within %g m of (%g %g %g); "
-                                    "mirroring handles planar walls of box-like domains only",
-                                    CDC_MAX_PLANES, radius, x[0], x[1], x[2]);
+                                    "wallMirror: more than %d distinct wall-face planes within %g m of (%g %g %g) "
+                                    "(a wall more finely faceted than the kernel can mirror: a larger mesh cell "
+                                    "at the wall, a smaller kernel, or wallMirror false)",
+                                    CDC_MAX_WALL_FACETS, radius, x[0], x[1], x[2]);
             }
         for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
             const int32_t nb = ctx->cell_cells[q];
@@ -107,6 +108,45 @@ cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t st
                                  double radius, cdc_ivec *cells)
 {
     return flood(ctx, x, start, seed_only, radius, BOX_OVERLAPS, cells, NULL, NULL);
+}
+
+/* Order of the facets for cdc_nearest_wall_planes: nearer first; equal distances by normal. */
+static int nearer(const cdc_plane *a, double da, const cdc_plane *b, double db)
+{
+    if (da != db) return da < db;
+    for (int d = 0; d < 3; ++d)
+        if (a->normal[d] != b->normal[d]) return a->normal[d] < b->normal[d];
+    return 0;
+}
+
+int cdc_nearest_wall_planes(const double x[3], cdc_plane *planes, int n_planes)
+{
+    double dist[CDC_MAX_WALL_FACETS];
+    for (int k = 0; k < n_planes; ++k) dist[k] = -plane_offset(planes + k, x);
+    /* insertion sort: a few dozen facets at most */
+    for (int k = 1; k < n_planes; ++k) {
+        const cdc_plane p = planes[k];
+        const double dp = dist[k];
+        int j = k;
+        for (; j > 0 && nearer(&p, dp, planes + j - 1, dist[j - 1]); --j) {
+            planes[j] = planes[j - 1];
+            dist[j] = dist[j - 1];
+        }
+        planes[j] = p;
+        dist[j] = dp;
+    }
+    int kept = 0;
+    for (int k = 0; k < n_planes; ++k) {
+        int same_wall = 0;
+        for (int q = 0; q < kept && !same_wall; ++q) {
+            const double *a = planes[k].normal, *b = planes[q].normal;
+            same_wall = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] > CDC_SAME_WALL_COS;
+        }
+        if (same_wall) continue;
+        if (kept == CDC_MAX_PLANES) return CDC_MAX_PLANES + 1;
+        planes[kept++] = planes[k];
+    }
+    return kept;
 }
 
 static void reflect(const double x[3], const cdc_plane *p, double out[3])

@@ -3,7 +3,9 @@
  * cells whose centre lies within a search radius get the raw weight V_c * profile(|x_c - x|).
  *
  * Wall-aware option: the part of the kernel that would fall beyond a wall is mirrored back
- * (method of images), i.e. a cell gets V_c * sum over images x' of profile(|x_c - x'|). Without it,
+ * (method of images), i.e. a cell gets V_c * sum over images x' of profile(|x_c - x'|). A faceted
+ * curved wall is mirrored across its facet nearest to the particle (its tangent plane there), walls
+ * meeting at sharp angles across each (cdc_nearest_wall_planes). Without it,
  * a particle near a wall has fewer cells to share its volume and the near-wall volume fraction
  * rises (Zhang et al. 2023, Fig. 10). With it, a uniform layer next to a wall stays flat.
  * Every image lies beyond the wall, so any in-domain cell it reaches is at least as close to the
@@ -15,11 +17,16 @@ cdc_status cdc_radial_kernel(cdc_context *ctx, const cdc_particle_in *p, double 
                              double (*profile)(double d2, const void *arg), const void *arg,
                              cdc_kernel_builder *out)
 {
-    cdc_plane planes[CDC_MAX_PLANES];
+    cdc_plane planes[CDC_MAX_WALL_FACETS];
     int n_planes = 0;
     cdc_status st = cdc_cells_within(ctx, p->x, p->host, p->ghost, radius, &ctx->near_cells,
                                      wall_mirror ? planes : NULL, &n_planes);
     if (st != CDC_OK) return st;
+    n_planes = cdc_nearest_wall_planes(p->x, planes, n_planes);
+    if (n_planes > CDC_MAX_PLANES)
+        return cdc_fail(ctx, CDC_ERR_UNSUPPORTED,
+                        "wallMirror: more than %d walls meeting at sharp angles within %g m of the particle at "
+                        "(%g %g %g)", CDC_MAX_PLANES, radius, p->x[0], p->x[1], p->x[2]);
 
     double images[CDC_MAX_IMAGES][3];
     const int n_images = cdc_mirror_images(p->x, planes, n_planes, radius, images);
