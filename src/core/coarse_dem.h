@@ -95,6 +95,16 @@ typedef struct cdc_kernel_params {
     int wall_mirror;          /* 1: expansion kernels mirror across wall faces (no wall over-concentration) */
 } cdc_kernel_params;
 
+/* The members of cdc_kernel_params a method reads, as bits (cdc_method_params): a caller can refuse
+ * a parameter given to a method that ignores it (a misspelt or misplaced key). */
+enum {
+    CDC_PARAM_EXPANSION_FACTOR = 1u << 0,
+    CDC_PARAM_SEARCH_FACTOR = 1u << 1,
+    CDC_PARAM_BANDWIDTH = 1u << 2,
+    CDC_PARAM_CUTOFF_FACTOR = 1u << 3,
+    CDC_PARAM_WALL_MIRROR = 1u << 4
+};
+
 typedef struct cdc_context cdc_context;
 typedef struct cdc_kernels cdc_kernels;
 
@@ -118,6 +128,8 @@ cdc_status cdc_locate_point(cdc_context *ctx, const double p[3], int32_t hint, i
 /* Number of registered kernel methods and their names ("centre", "divided", ...). */
 int cdc_method_count(void);
 const char *cdc_method_name(int i);
+/* The CDC_PARAM_* bits of the parameters method `name` reads (0 for none or an unknown name). */
+unsigned cdc_method_params(const char *name);
 /* Comma-separated list of method names, for error messages. */
 const char *cdc_method_list(void);
 

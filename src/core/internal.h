@@ -130,6 +130,7 @@ typedef struct cdc_particle_in {
  */
 typedef struct cdc_method {
     const char *name;
+    unsigned params; /* CDC_PARAM_* bits: the members of cdc_kernel_params it reads */
     cdc_status (*check)(cdc_context *ctx, const cdc_kernel_params *prm);
     double (*reach)(const cdc_kernel_params *prm, double r);
     cdc_status (*build)(cdc_context *ctx, const cdc_kernel_params *prm, const cdc_particle_in *p,

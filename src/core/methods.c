@@ -21,6 +21,12 @@ int cdc_method_count(void) { return n_methods; }
 
 const char *cdc_method_name(int i) { return (i >= 0 && i < n_methods) ? table[i]->name : NULL; }
 
+unsigned cdc_method_params(const char *name)
+{
+    const cdc_method *m = cdc_find_method(name);
+    return m ? m->params : 0u;
+}
+
 const char *cdc_method_list(void)
 {
     return "centre, divided, bigParticle, twoGrid, gaussian, exact";

@@ -1340,6 +1340,16 @@ static void test_method_registry(void)
     for (int i = 0; i < cdc_method_count(); ++i)
         CHECK(strstr(cdc_method_list(), cdc_method_name(i)) != NULL, "%s missing from list", cdc_method_name(i));
     CHECK(cdc_method_count() == 6, "count %d", cdc_method_count());
+    /* the parameters each method reads, which the OpenFOAM layer accepts in its <method>Props */
+    CHECK(cdc_method_params("centre") == 0 && cdc_method_params("divided") == 0 && cdc_method_params("exact") == 0,
+          "centre/divided/exact read parameters");
+    CHECK(cdc_method_params("bigParticle") == (CDC_PARAM_EXPANSION_FACTOR | CDC_PARAM_WALL_MIRROR), "bigParticle %u",
+          cdc_method_params("bigParticle"));
+    CHECK(cdc_method_params("twoGrid") == (CDC_PARAM_SEARCH_FACTOR | CDC_PARAM_WALL_MIRROR), "twoGrid %u",
+          cdc_method_params("twoGrid"));
+    CHECK(cdc_method_params("gaussian") == (CDC_PARAM_BANDWIDTH | CDC_PARAM_CUTOFF_FACTOR | CDC_PARAM_WALL_MIRROR),
+          "gaussian %u", cdc_method_params("gaussian"));
+    CHECK(cdc_method_params("noSuchMethod") == 0, "unknown method has parameters");
 }
 
 int main(void)

@@ -118,6 +118,33 @@ check restart_without_dem_state '' "no DEM restart file" \
     "cp -r 0 0.0005 && sed -i 's/^startTime .*/startTime 0.0005;/' system/controlDict"
 check_runs restart_dem_fresh_start '$a demFreshStart true;' \
     "cp -r 0 0.0005 && sed -i 's/^startTime .*/startTime 0.0005;/' system/controlDict"
+# an entry of a <model>Props that its model does not read (a misspelling) is refused with the valid ones
+check props_unknown_key 's/bigParticleProps .*/bigParticleProps { expansionfactor 5; wallMirror true; }/' \
+    "unknown entry expansionfactor in"
+check props_unknown_key_valid 's/bigParticleProps .*/bigParticleProps { expansionfactor 5; wallMirror true; }/' \
+    "valid entries: expansionFactor, wallMirror"
+check props_key_of_other_method 's/twoGridProps .*/twoGridProps { expansionFactor 3; }/; s/^voidFractionModel .*/voidFractionModel twoGrid;/' \
+    "valid entries: searchFactor, wallMirror"
+check diffusion_props_unknown_key 's/^smoothingModel .*/smoothingModel diffusion;/; s/diffusionProps .*/diffusionProps { bandwidth 6e-3; smoothExchangeField true; }/' \
+    "unknown entry smoothExchangeField in"
+check force_props_unknown_key 's/GidaspowDrag/DiFeliceDrag/; $a DiFeliceDragProps { reynoldNumber slip; }' \
+    "valid entries: reynoldsNumber"
+check background_props_unknown_key '$a backgroundFields on; backgroundFieldsProps { expansionfactor 5; }' \
+    "unknown entry expansionfactor in"
+check_warns effective_parameters_printed 's/bigParticleProps .*/bigParticleProps { wallMirror true; }/' \
+    "voidFractionModel bigParticle: expansionFactor 0 (default) wallMirror true"
+# a DEM error reaches the solver's own output (it was in log.liggghts only), with a hint
+check dem_error_in_solver_output '' "the DEM (LIGGGHTS) stopped the run" "echo 'fix bad all no_such_style' >> DEM/in.liggghts"
+check dem_error_hint_style '' "a style LIGGGHTS does not know" "echo 'fix bad all no_such_style' >> DEM/in.liggghts"
+check dem_error_hint_processors '' "as many ranks as mpirun -np" "sed -i 's/^processors .*/processors 2 1 1/' DEM/in.liggghts"
+check_warns deltaT_replaced_said 's/^couplingInterval .*/couplingInterval 125;/' \
+    "it replaces deltaT 0.001 of"
+# a serial run ends without OpenFOAM's "Finalizing MPI, but was initialized elsewhere" warning
+if grep -q "Finalizing MPI" "$work/deltaT_replaced_said/log"; then
+    echo "FAIL: serial run warns 'Finalizing MPI' at its end"; fail=$((fail+1))
+else
+    echo "PASS: serial run ends without the 'Finalizing MPI' warning"; pass=$((pass+1))
+fi
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

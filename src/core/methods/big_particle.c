@@ -40,4 +40,4 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return CDC_OK;
 }
 
-const cdc_method cdc_method_big_particle = {"bigParticle", check, reach, build};
+const cdc_method cdc_method_big_particle = {"bigParticle", CDC_PARAM_EXPANSION_FACTOR | CDC_PARAM_WALL_MIRROR, check, reach, build};

@@ -20,4 +20,4 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return CDC_OK;
 }
 
-const cdc_method cdc_method_centre = {"centre", cdc_check_no_params, reach, build};
+const cdc_method cdc_method_centre = {"centre", 0, cdc_check_no_params, reach, build};

@@ -47,4 +47,4 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return CDC_OK;
 }
 
-const cdc_method cdc_method_divided = {"divided", cdc_check_no_params, cdc_reach_radius, build};
+const cdc_method cdc_method_divided = {"divided", 0, cdc_check_no_params, cdc_reach_radius, build};

@@ -26,4 +26,4 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return CDC_OK;
 }
 
-const cdc_method cdc_method_exact = {"exact", cdc_check_no_params, cdc_reach_radius, build};
+const cdc_method cdc_method_exact = {"exact", 0, cdc_check_no_params, cdc_reach_radius, build};

@@ -42,4 +42,4 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return cdc_radial_kernel(ctx, p, radius, prm->wall_mirror, profile, &g, out);
 }
 
-const cdc_method cdc_method_gaussian = {"gaussian", check, reach, build};
+const cdc_method cdc_method_gaussian = {"gaussian", CDC_PARAM_BANDWIDTH | CDC_PARAM_CUTOFF_FACTOR | CDC_PARAM_WALL_MIRROR, check, reach, build};

@@ -26,4 +26,4 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return cdc_radial_kernel(ctx, p, radius, prm->wall_mirror, cdc_uniform_profile, &r2, out);
 }
 
-const cdc_method cdc_method_two_grid = {"twoGrid", check, reach, build};
+const cdc_method cdc_method_two_grid = {"twoGrid", CDC_PARAM_SEARCH_FACTOR | CDC_PARAM_WALL_MIRROR, check, reach, build};

@@ -155,7 +155,7 @@ coarseDemCoupling::coarseDemCoupling
 
     if (dict_.lookupOrDefault<Switch>("backgroundFields", false))
     {
-        cdc_kernel_params prm = readKernelParams(dict_, "backgroundFields");
+        cdc_kernel_params prm = readKernelParams(dict_, "backgroundFields", "bigParticle");
         if (prm.expansion_factor == 0) prm.expansion_factor = 5;
         const cdc_status st = cdc_kernels_create(demMesh_.context(), "bigParticle", &prm, &backgroundKernels_);
         if (st != CDC_OK)

@@ -4,6 +4,9 @@
 #include "Pstream.H"
 
 #include <mpi.h>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 
 #include "lammps.h"
 #include "input.h"
@@ -11,11 +14,60 @@
 #include "update.h"
 #include "fix_couple_coarse.h"
 
+// LIGGGHTS stops on an input or run error with exit(1) (Error::all), after writing the message to
+// its log only (its screen output is off): without this the solver's output would just end. An
+// exit during a LIGGGHTS call is reported on the solver's error output, with the message and a
+// hint for the mistakes users make most.
+namespace
+{
+std::string demLogFile;
+bool inDemCall = false;
+
+struct demCall
+{
+    demCall() { inDemCall = true; }
+    ~demCall() { inDemCall = false; }
+};
+
+const char* demErrorHint(const std::string& msg)
+{
+    if (msg.find("processors") != std::string::npos)
+        return "the DEM script's processors command must give as many ranks as mpirun -np, split as"
+               " system/decomposeParDict splits the mesh (e.g. processors * 1 1 with simple (N 1 1))";
+    if (msg.find("Atom types must start from 1") != std::string::npos)
+        return "the DEM has no particles: create or read them before the coupling fix";
+    if (msg.find("Invalid") != std::string::npos && msg.find("style") != std::string::npos)
+        return "a style LIGGGHTS does not know: check its spelling (this LIGGGHTS has no VTK dumps)";
+    if (msg.find("Cannot open") != std::string::npos)
+        return "a file the DEM script reads is missing; relative paths are relative to the case directory";
+    return nullptr;
+}
+
+void reportDemExit()
+{
+    if (!inDemCall) return;
+    std::ifstream log(demLogFile);
+    std::string line, last;
+    while (std::getline(log, line))
+    {
+        if (line.compare(0, 5, "ERROR") == 0) last = line;
+    }
+    const char* hint = demErrorHint(last);
+    std::fprintf
+    (
+        stderr, "\n--> FOAM FATAL ERROR: the DEM (LIGGGHTS) stopped the run\n    %s\n%s%s%s    LIGGGHTS log: %s\n\n",
+        last.empty() ? "(no ERROR line in its log)" : last.c_str(),
+        hint ? "    " : "", hint ? hint : "", hint ? "\n" : "", demLogFile.c_str()
+    );
+}
+}
+
 Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
 :
     lmp_(nullptr),
     fix_(nullptr),
-    restarted_(false)
+    restarted_(false),
+    ownsMpi_(false)
 {
     // the DEM script and its relative paths belong to the case, not to processorN/
     const fileName caseDir = mesh.time().globalPath();
@@ -34,9 +86,12 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     if (!started)
     {
         MPI_Init(nullptr, nullptr);
+        ownsMpi_ = true;
     }
 
     const std::string logFile = (caseDir/"log.liggghts");
+    demLogFile = logFile;
+    std::atexit(reportDemExit);
     // A restarted run continues the DEM from <startTime>/dem.restart: the script gets
     // ${restarting} (1 or 0) and ${restart} (the file, or "none") and chooses what to read, e.g.
     //   if "${restarting} == 1" then "read_restart ${restart}" else "read_restart DEM/init.restart"
@@ -67,10 +122,13 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     // Relative paths in the script (data files, dumps) are relative to the case.
     Info<< "DEM restart file: " << restart << nl;
     Info<< "Reading DEM script " << script << " (LIGGGHTS log: " << logFile
-        << "; a DEM input error stops the run with its message there)" << endl;
+        << ")" << endl;
     const fileName cwd0 = cwd();
     chDir(caseDir);
-    lmp_->input->file(script.c_str());
+    {
+        demCall guard;
+        lmp_->input->file(script.c_str());
+    }
     chDir(cwd0);
 
     const int ifix = lmp_->modify->find_fix(fixId.c_str());
@@ -87,6 +145,12 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
 Foam::liggghtsDem::~liggghtsDem()
 {
     delete lmp_;
+    // MPI started here (a serial run) ends here: OpenFOAM's exit would finalise it with the warning
+    // "Finalizing MPI, but was initialized elsewhere" at the end of every serial run
+    if (ownsMpi_)
+    {
+        MPI_Finalize();
+    }
 }
 
 Foam::scalar Foam::liggghtsDem::timestep() const
@@ -96,6 +160,7 @@ Foam::scalar Foam::liggghtsDem::timestep() const
 
 void Foam::liggghtsDem::command(const std::string& line)
 {
+    demCall guard;
     lmp_->input->one(line.c_str());
 }
 

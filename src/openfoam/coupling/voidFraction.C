@@ -1,21 +1,48 @@
 #include "voidFraction.H"
 #include "Time.H"
 #include "mathematicalConstants.H"
+#include "propsKeys.H"
 
 #include <chrono>
 
 namespace Foam
 {
 
-cdc_kernel_params readKernelParams(const dictionary& dict, const word& name)
+// The <method>Props entries, each with the parameter bit of the core's methods that reads it.
+static const struct { const char* key; unsigned bit; } kernelKeys[] =
+{
+    {"expansionFactor", CDC_PARAM_EXPANSION_FACTOR},
+    {"searchFactor", CDC_PARAM_SEARCH_FACTOR},
+    {"bandwidth", CDC_PARAM_BANDWIDTH},
+    {"cutoffFactor", CDC_PARAM_CUTOFF_FACTOR},
+    {"wallMirror", CDC_PARAM_WALL_MIRROR},
+};
+
+cdc_kernel_params readKernelParams(const dictionary& dict, const word& name, const word& method)
 {
     cdc_kernel_params prm = {};
     const dictionary& props = dict.optionalSubDict(name + "Props");
+    const unsigned reads = cdc_method_params(method.c_str());
+    wordList valid;
+    for (const auto& k : kernelKeys) if (reads & k.bit) valid.append(k.key);
+    if (dict.isDict(name + "Props")) checkPropsKeys(props, valid);
     prm.expansion_factor = props.lookupOrDefault<scalar>("expansionFactor", 0);
     prm.search_factor = props.lookupOrDefault<scalar>("searchFactor", 0);
     prm.bandwidth = props.lookupOrDefault<scalar>("bandwidth", 0);
     prm.cutoff_factor = props.lookupOrDefault<scalar>("cutoffFactor", 0);
     prm.wall_mirror = props.lookupOrDefault<Switch>("wallMirror", false) ? 1 : 0;
+    // what the method runs with, so that a user sees a default taken (0: the method's own default)
+    const scalar values[] = {prm.expansion_factor, prm.search_factor, prm.bandwidth, prm.cutoff_factor};
+    Info<< (name == method ? word("voidFractionModel") : name) << " " << method << ":";
+    for (size_t i = 0; i < sizeof kernelKeys/sizeof kernelKeys[0]; ++i)
+    {
+        if (!(reads & kernelKeys[i].bit)) continue;
+        Info<< " " << kernelKeys[i].key << " ";
+        if (kernelKeys[i].bit == CDC_PARAM_WALL_MIRROR) Info<< (prm.wall_mirror ? "true" : "false");
+        else Info<< values[i];
+        if (!props.found(kernelKeys[i].key)) Info<< " (default)";
+    }
+    Info<< endl;
     if (name == "gaussian" && !props.found("bandwidth"))
     {
         FatalIOErrorInFunction(dict)
@@ -70,7 +97,7 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
 :
     mesh_(mesh),
     method_(dict.get<word>("voidFractionModel")),
-    params_(readKernelParams(dict, method_)),
+    params_(readKernelParams(dict, method_, method_)),
     kernels_(nullptr),
     smoothing_(smoothing::off),
     diffusion_(),
@@ -102,6 +129,7 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
     {
         smoothing_ = smoothing::diffusion;
         const dictionary& d = dict.subDict("diffusionProps");
+        checkPropsKeys(d, {"bandwidth", "nSteps", "DRule", "particleDiameter", "smoothExchangeFields"});
         diffusion_.bandwidth = d.get<scalar>("bandwidth");
         diffusion_.n_steps = d.lookupOrDefault<label>("nSteps", 4);
         diffusion_.d_rule = d.lookupOrDefault<Switch>("DRule", false) ? 1 : 0;
@@ -119,6 +147,7 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
     {
         smoothing_ = smoothing::sizeAware;
         const dictionary& d = dict.subDict("sizeAwareDiffusionProps");
+        checkPropsKeys(d, {"bandwidthOverD", "classRatio", "nSteps"});
         bandwidthOverD_ = d.get<scalar>("bandwidthOverD");
         classRatio_ = d.lookupOrDefault<scalar>("classRatio", 1.1);
         diffusion_.n_steps = d.lookupOrDefault<label>("nSteps", 4);

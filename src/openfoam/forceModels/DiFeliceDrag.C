@@ -44,6 +44,7 @@ public:
         superficialRe_ = (re == "superficial");
     }
     bool isDrag() const override { return true; }
+    wordList propsKeys() const override { return {"reynoldsNumber"}; }
 
     void dragCoefficient(const particleFluidState& s, const fluidProperties& fl, scalarField& K) const override
     {

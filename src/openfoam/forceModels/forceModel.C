@@ -1,5 +1,6 @@
 #include "forceModel.H"
 #include "error.H"
+#include "propsKeys.H"
 
 namespace Foam
 {
@@ -24,7 +25,12 @@ Foam::autoPtr<Foam::forceModel> Foam::forceModel::New(const word& name, const di
             << "    valid force models: " << dictionaryConstructorTablePtr_->sortedToc()
             << exit(FatalIOError);
     }
-    return cstrIter()(name, couplingDict.optionalSubDict(name + "Props"));
+    autoPtr<forceModel> model(cstrIter()(name, couplingDict.optionalSubDict(name + "Props")));
+    if (couplingDict.isDict(name + "Props"))
+    {
+        checkPropsKeys(couplingDict.subDict(name + "Props"), model->propsKeys());
+    }
+    return model;
 }
 
 void Foam::forceModel::dragCoefficient(const particleFluidState&, const fluidProperties&, scalarField&) const

@@ -23,6 +23,7 @@ public:
         CL_(props.lookupOrDefault<scalar>("CL", 0.5))
     {}
     int needs() const override { return needVorticity; }
+    wordList propsKeys() const override { return {"CL"}; }
 
     void addForce(const particleFluidState& s, const fluidProperties& fl, vectorField& f) const override
     {

@@ -25,6 +25,7 @@ public:
         Cvm_(props.lookupOrDefault<scalar>("Cvm", 0.5))
     {}
     int needs() const override { return needDUfDt | needDvDt; }
+    wordList propsKeys() const override { return {"Cvm"}; }
 
     void addForce(const particleFluidState& s, const fluidProperties& fl, vectorField& f) const override
     {

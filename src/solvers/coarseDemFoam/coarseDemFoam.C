@@ -51,10 +51,18 @@ int main(int argc, char *argv[])
     // Not adjusted to the write times (adjust = false): the DEM advances exactly nCouple DEM steps
     // per CFD step, so both clocks and the impulses they exchange stay equal. Writes and samples
     // with adjustableRunTime then fall on the CFD step nearest to each interval.
+    const scalar deltaTDict = runTime.deltaTValue();
     runTime.setDeltaT(nCouple*coupling.demTimestep(), false);
     Info<< "CFD time step = " << nCouple << " x DEM step " << coupling.demTimestep() << " s = "
         << runTime.deltaTValue() << " s"
-        << (adjustTimeStep ? " (adjusted to maxCo, at most this couplingInterval)" : "") << nl << endl;
+        << (adjustTimeStep ? " (adjusted to maxCo, at most this couplingInterval)" : "");
+    if (mag(deltaTDict - runTime.deltaTValue()) > 1e-12*runTime.deltaTValue())
+    {
+        // said once: the coupling sets the CFD step, whatever system/controlDict's deltaT says
+        Info<< "; it replaces deltaT " << deltaTDict << " of " << runTime.controlDict().name()
+            << " (couplingInterval in constant/couplingProperties sets the CFD step)";
+    }
+    Info<< nl << endl;
     {
         const scalar steps = runTime.controlDict().get<scalar>("writeInterval")/runTime.deltaTValue();
         const word wc(runTime.controlDict().get<word>("writeControl"));
