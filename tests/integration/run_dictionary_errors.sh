@@ -137,6 +137,24 @@ check_warns effective_parameters_printed 's/bigParticleProps .*/bigParticleProps
 check dem_error_in_solver_output '' "the DEM (LIGGGHTS) stopped the run" "echo 'fix bad all no_such_style' >> DEM/in.liggghts"
 check dem_error_hint_style '' "a style LIGGGHTS does not know" "echo 'fix bad all no_such_style' >> DEM/in.liggghts"
 check dem_error_hint_processors '' "as many ranks as mpirun -np" "sed -i 's/^processors .*/processors 2 1 1/' DEM/in.liggghts"
+# a mesh in millimetres with the DEM in metres, and the reverse, say "units"
+check mesh_in_millimetres '' "and the mesh are in different units" \
+    "sed -i 's/^scale .*/scale 1;/' system/blockMeshDict && blockMesh > log.blockMesh 2>&1"
+check dem_in_millimetres '' "most likely in different units" \
+    "sed -i 's/diameter 0.001 density/diameter 1 density/' DEM/in.liggghts"
+# p zeroGradient at a velocity inlet with gravity is refused, naming the patch; without 0/alpha a
+# velocity inlet takes alpha = 1 (the superficial inflow), not zeroGradient
+check p_zero_gradient_inlet '' "patch inlet of" \
+    "sed -i 's/^    inlet  { type fixedFluxPressure; value uniform 0; }/    inlet  { type zeroGradient; }/' 0/p"
+check p_zero_gradient_inlet_fix '' "inlet { type fixedFluxPressure; value uniform 0; }" \
+    "sed -i 's/^    inlet  { type fixedFluxPressure; value uniform 0; }/    inlet  { type zeroGradient; }/' 0/p"
+check_warns alpha_default_inlet 's/^alphaMin .*/alphaMin 0.3;/' "alpha fixedValue 1 at the velocity inlets 1(inlet)"
+# a continued run: the DEM script must read the restart file (it would start again from its initial
+# state under a fluid that continues); the tutorial's script does
+first_run="sed -i 's/^writeInterval .*/writeInterval 0.0005;/' system/controlDict && coarseDemFoam > log.first 2>&1 && sed -i 's/^startTime .*/startTime 0.0005;/' system/controlDict"
+check_runs restart_script_reads_restart 's/^alphaMin .*/alphaMin 0.3;/' "$first_run"
+check restart_script_ignores_restart '' "the script does not read the restart file" \
+    "$first_run && sed -i 's/restarting} == 1/restarting} == 2/' DEM/in.liggghts"
 check_warns deltaT_replaced_said 's/^couplingInterval .*/couplingInterval 125;/' \
     "it replaces deltaT 0.001 of"
 # a serial run ends without OpenFOAM's "Finalizing MPI, but was initialized elsewhere" warning

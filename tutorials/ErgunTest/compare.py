@@ -4,12 +4,15 @@
 with U the superficial velocity, the measured drop taken net of the fluid's hydrostatic part
 rho g L (p includes it: the fluid equation carries alpha g), and eps the mean fluid fraction of the cells between the two
 measuring planes (z = 15.95 and 28.05 mm, cell centres, 4 mm inside the bed's ends so that the
-kernel's smoothing of the bed edges stays out). Appends to results/summary.csv.
-Usage: compare.py <time dir> <U> <wall seconds>
+kernel's smoothing of the bed edges stays out). The means are plain means over cells, which are
+volume-weighted means only because this mesh's cells are all equal: on a graded or curved mesh weight
+by cell volume (tutorials/packedBedCylinder/compare.py does). Appends to results/summary.csv.
+Usage: compare.py <time dir> <U> <wall seconds> [model type, default A]
 """
 import os, re, sys
 
 tdir, U, wall = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+model = sys.argv[4] if len(sys.argv) > 4 else "A"
 rho, nu, d = 1.2, 1.5e-5, 1e-3
 mu = rho * nu
 nx, ny, nz, dz = 10, 10, 50, 1.1e-3
@@ -40,7 +43,7 @@ new = not os.path.exists("results/summary.csv")
 with open("results/summary.csv", "a") as f:
     if new:
         f.write("quantity,measured,reference,relative_error,wall_time_s\n")
-    f.write(f"pressure_drop_Pa_U{U:g}_eps{eps:.4f},{dp:.6g},{ergun:.6g},{err:.3e},{wall:.1f}\n")
+    f.write(f"pressure_drop_Pa_U{U:g}_eps{eps:.4f}{'' if model == 'A' else '_model' + model},{dp:.6g},{ergun:.6g},{err:.3e},{wall:.1f}\n")
 ok = err <= 0.05
-print(("PASS" if ok else "FAIL") + f" ErgunTest/U={U:g}: dp {dp:.4g} Pa, Ergun {ergun:.4g} Pa (eps {eps:.4f}), error {100*err:.2f} %")
+print(("PASS" if ok else "FAIL") + f" ErgunTest{'' if model == 'A' else '/model' + model}/U={U:g}: dp {dp:.4g} Pa, Ergun {ergun:.4g} Pa (eps {eps:.4f}), error {100*err:.2f} %")
 sys.exit(0 if ok else 1)

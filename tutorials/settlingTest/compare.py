@@ -15,6 +15,7 @@ from settling_ode import settling
 
 case = sys.argv[1] if len(sys.argv) > 1 else "."
 wall = float(sys.argv[2]) if len(sys.argv) > 2 else float("nan")
+model = sys.argv[3] if len(sys.argv) > 3 else "A"
 d, rho_p, rho_f, nu = 2e-3, 2500.0, 1000.0, 1e-6
 rows = []
 with open(os.path.join(case, "post", "particle.txt")) as f:
@@ -52,5 +53,5 @@ with open(os.path.join(case, "results", "summary.csv"), "w") as f:
 print(f"settlingTest: terminal velocity {v_sim:.5f} m/s, analytic {v_terminal:.5f} m/s, error {100*err:.2f} %")
 print(f"settlingTest: velocity history max deviation {100*hist_err:.2f} % of v_t")
 ok = err <= 0.01
-print(("PASS" if ok else "FAIL") + f" settlingTest/terminal_velocity_within_1pct ({100*err:.2f} %)")
+print(("PASS" if ok else "FAIL") + f" settlingTest{'' if model == 'A' else '/model' + model}/terminal_velocity_within_1pct ({100*err:.2f} %)")
 sys.exit(0 if ok else 1)

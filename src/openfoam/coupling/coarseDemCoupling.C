@@ -1,5 +1,6 @@
 #include "coarseDemCoupling.H"
 #include "demTimeStepCheck.H"
+#include "demUnitsCheck.H"
 #include "fvc.H"
 #include "noAliasFvc.H"
 #include "zeroGradientFvPatchFields.H"
@@ -143,8 +144,17 @@ coarseDemCoupling::coarseDemCoupling
         // -V grad(p), or the dynamic pressure force leaves the fluid and reaches no particle.
         FatalIOErrorInFunction(dict_)
             << "forceModels in " << dict_.name() << " lacks gradPForce, which modelType A needs: the"
-            << " fluid equation has alpha grad(p), so the particles must get -V grad(p)"
-            << " (use modelType B for a drag-only set)" << exit(FatalIOError);
+            << " fluid equation has alpha grad(p), so the particles must get -V grad(p)" << nl
+            << "    (or modelType B with drag and Archimedes: the drag is then divided by the fluid"
+            << " fraction)" << exit(FatalIOError);
+    }
+    dragOverAlpha_ = modelB_ && !hasGradP;
+    if (dragOverAlpha_ && !hasArchimedes && mag(fluid_.g) > 0)
+    {
+        WarningInFunction
+            << "modelType B without gradPForce or Archimedes in " << dict_.name() << ": the particles"
+            << " get no buoyancy (rho_f V g); add Archimedes (drag / alpha_f carries the rest of the"
+            << " pressure gradient)" << endl;
     }
     if (hasGradP && hasArchimedes)
     {
@@ -214,6 +224,7 @@ coarseDemCoupling::coarseDemCoupling
     }
 
     dem_.reset(new liggghtsDem(mesh, dict_));
+    checkDemUnits(dem_->lammps(), mesh, dict_);    // DEM box and particles against the mesh
     checkDemTimestep(dem_->lammps(), dict_);   // vs Rayleigh and Hertz times: warn / stop
     keepRestartForces_ = dem_->restarted();
 
@@ -447,6 +458,14 @@ void coarseDemCoupling::couple
             fOther_ += fi;
             if (fm.reactsOnFluid(modelB_)) fReact_ += fi;
         }
+    }
+    // Model B without gradPForce (Zhou et al. 2010, CFDEM's modelType B): the fluid carries -grad(p)
+    // and every reaction; the particles get the dynamic pressure gradient's share through the drag
+    // divided by the fluid fraction, for every drag law (without it a gas bed at eps 0.42 would
+    // fluidize at 0.77 instead of 0.43 m/s)
+    if (dragOverAlpha_)
+    {
+        forAll(K_, i) K_[i] /= state_.alphaf[i];
     }
     // implicitParticleDrag: the DEM gets the other forces as a force and the drag as K and u_f
     force_.resize(3*n);

@@ -130,6 +130,7 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
         lmp_->input->file(script.c_str());
     }
     chDir(cwd0);
+    if (restarted_) checkRestartRead(restartFile, dict);
 
     const int ifix = lmp_->modify->find_fix(fixId.c_str());
     fix_ = ifix < 0 ? nullptr : dynamic_cast<LAMMPS_NS::FixCoupleCoarse*>(lmp_->modify->fix[ifix]);
@@ -139,6 +140,34 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
             << "the DEM script " << script << " defines no fix '" << fixId << "' of style couple/coarse" << nl
             << "    add:  fix " << fixId << " all couple/coarse   (or set demCouplingFix in "
             << dict.name() << ")" << exit(FatalIOError);
+    }
+}
+
+// A script that does not read ${restart} when ${restarting} is 1 (one written for fresh starts only)
+// would start the DEM again from its initial state under a fluid that continues: the DEM step after
+// the script must be the one the restart file was written at (writeRestart keeps it beside the file).
+void Foam::liggghtsDem::checkRestartRead(const fileName& restartFile, const dictionary& dict) const
+{
+    const fileName stepFile = restartFile + ".step";
+    long long written = -1;
+    if (isFile(stepFile))
+    {
+        std::ifstream in(stepFile);
+        in >> written;
+    }
+    const long long now = lmp_->update->ntimestep;
+    // without the step file (a restart written before it existed) a fresh script is still at step 0
+    if (written >= 0 ? now != written : now == 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "the DEM continues from " << restartFile << " (written at DEM step "
+            << (written >= 0 ? std::to_string(written) : std::string("unknown")).c_str() << ") but after its script "
+            << dict.get<fileName>("demScript") << " the DEM is at step " << std::to_string(now).c_str()
+            << ": the script does not read the restart file" << nl
+            << "    read it when the run continues, e.g." << nl
+            << "        if \"${restarting} == 1\" then \"read_restart ${restart}\" else \"create_box ...\" \"create_atoms ...\"" << nl
+            << "    (tutorials/ErgunTest/DEM), or set demFreshStart true in " << dict.name()
+            << " and remove the restart file to start the DEM from its initial state" << exit(FatalIOError);
     }
 }
 
@@ -184,6 +213,11 @@ void Foam::liggghtsDem::writeRestart(const std::string& file)
 {
     // LIGGGHTS re-initialises and re-exchanges the atoms for it; the next run's setup rebuilds the rest
     command("write_restart " + file);
+    // the DEM step it holds, to check that a continued run's script reads it (checkRestartRead)
+    if (Pstream::master())
+    {
+        std::ofstream(file + ".step") << lmp_->update->ntimestep << std::endl;
+    }
 }
 
 void Foam::liggghtsDem::pull(demParticles& p) const

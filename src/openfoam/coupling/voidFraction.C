@@ -74,8 +74,9 @@ void buildKernels(const coarseDemMesh& mesh, cdc_kernels* k, const cdc_particles
             << (decompositionMismatch
                 ? "these particles are inside the CFD mesh but in another rank's part of it: the DEM"
                   " (LIGGGHTS processors command) and the CFD (system/decomposeParDict) must split the"
-                  " domain at the same planes, e.g. simple (2 1 1) with an even number of cells across"
-                  " and processors * 1 1"
+                  " domain at the same planes and number the parts alike, e.g. simple (2 1 1) with an even"
+                  " number of cells across and processors * 1 1, or hierarchical (Nx Ny 1) with order yxz"
+                  " and processors Nx Ny 1 (LIGGGHTS numbers its ranks with y varying fastest)"
                 : "particles must stay inside the CFD mesh (check the DEM walls and insertion region)")
             << exit(FatalError);
     }

@@ -1,6 +1,8 @@
 /*---------------------------------------------------------------------------*\
-    Archimedes: buoyancy f = -rho V g (Weaver & Miskovic 2023, eq. 14). Use it
-    instead of gradPForce when only the hydrostatic part is wanted.
+    Archimedes: buoyancy f = -rho V g (Weaver & Miskovic 2023, eq. 14), for
+    modelType B without gradPForce (CFDEM's modelType B): the drag, divided by
+    the fluid fraction there, carries the dynamic part of the pressure gradient.
+    With gradPForce (which holds the buoyancy) it is refused.
 \*---------------------------------------------------------------------------*/
 #include "forceModel.H"
 #include "addToRunTimeSelectionTable.H"

@@ -23,6 +23,7 @@ Description
 #include "turbulentTransportModel.H"
 #include "pimpleControl.H"
 #include "fixedFluxPressureFvPatchScalarField.H"
+#include "wallFvPatch.H"
 #include "coarseDemCoupling.H"
 #include "noAliasFvc.H"
 
