@@ -170,6 +170,15 @@ const double *cdc_kernels_weights(const cdc_kernels *k);
 void cdc_kernels_timing(const cdc_kernels *k, double *seconds_locate, double *seconds_kernel);
 /* Particles found outside the mesh in the last build: count and their ids. */
 int32_t cdc_kernels_outside(const cdc_kernels *k, const int64_t **ids);
+/* Of this rank's particles of the last build (p as given to it), those whose centre is inside the
+ * mesh but that reach partly outside it: an end of one of their three axes, x +- r e_d, lies in no
+ * cell. *count gets their number, *depth the deepest such end beyond the mesh as a fraction of its
+ * particle's radius (found by bisection along the axis, to 1e-6; 0 when none), *id the id of that
+ * particle (-1 when none). A particle pressed into a DEM wall reaches beyond it by its contact
+ * overlap, so small depths are normal; a large one is a particle leaving the mesh. Six point
+ * locations per particle: for reports at write times, not for every coupling. */
+cdc_status cdc_kernels_partly_outside(const cdc_kernels *k, const cdc_particles *p, int32_t *count,
+                                      double *depth, int64_t *id);
 
 /* alpha_p[c] = sum_i V_i w_ic / V_c with V_i = 4/3 pi r_i^3 (n_cells outputs, overwritten). */
 cdc_status cdc_alpha_p(const cdc_kernels *k, const cdc_particles *p, double *alpha_p);

@@ -361,6 +361,61 @@ int32_t cdc_kernels_outside(const cdc_kernels *k, const int64_t **ids)
     return k ? k->n_outside : 0;
 }
 
+/* How far along the unit direction e the particle reaches beyond the mesh, as a fraction of r
+ * (0 if the end x + r e is in a cell): the boundary is bracketed between the centre (inside) and
+ * the end (outside) and found by bisection. */
+static cdc_status reach_beyond(cdc_context *ctx, const double x[3], double r, const double e[3], int32_t host,
+                               double *fraction)
+{
+    double y[3] = {x[0] + r * e[0], x[1] + r * e[1], x[2] + r * e[2]};
+    int32_t c;
+    cdc_status st = cdc_locate_point(ctx, y, host, &c);
+    *fraction = 0.0;
+    if (st != CDC_OK || c >= 0) return st;
+    double in = 0.0, out = 1.0; /* along the axis, in radii */
+    while (out - in > 1e-6) {
+        const double mid = 0.5 * (in + out);
+        for (int d = 0; d < 3; ++d) y[d] = x[d] + mid * r * e[d];
+        st = cdc_locate_point(ctx, y, host, &c);
+        if (st != CDC_OK) return st;
+        if (c >= 0) in = mid; else out = mid;
+    }
+    *fraction = 1.0 - in;
+    return CDC_OK;
+}
+
+cdc_status cdc_kernels_partly_outside(const cdc_kernels *k, const cdc_particles *p, int32_t *count,
+                                      double *depth, int64_t *id)
+{
+    if (!k || !p || !count || !depth || !id) return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT,
+                                                             "cdc_kernels_partly_outside: NULL argument");
+    *count = 0;
+    *depth = 0.0;
+    *id = -1;
+    const int32_t n = p->n < k->n_local ? p->n : k->n_local;
+    for (int32_t i = 0; i < n; ++i) {
+        const int32_t host = k->hosts.v[i];
+        if (host < 0) continue; /* outside altogether: cdc_kernels_outside */
+        const double *x = p->position + 3 * (size_t)i;
+        double deepest = 0.0;
+        for (int a = 0; a < 6; ++a) {
+            double e[3] = {0.0, 0.0, 0.0}, f;
+            e[a / 2] = (a % 2) ? -1.0 : 1.0;
+            cdc_status st = reach_beyond(k->ctx, x, p->radius[i], e, host, &f);
+            if (st != CDC_OK) return st;
+            if (f > deepest) deepest = f;
+        }
+        if (deepest > 0.0) {
+            ++*count;
+            if (deepest > *depth) {
+                *depth = deepest;
+                *id = particle_id(p, i);
+            }
+        }
+    }
+    return CDC_OK;
+}
+
 cdc_status cdc_spread(const cdc_kernels *k, const double *q, int ncomp, double *out)
 {
     /* a rank may hold no particles: then q may be NULL */

@@ -1334,6 +1334,30 @@ static void test_bad_input(void)
     box_mesh_destroy(&b);
 }
 
+/* a particle reaching through a wall is counted, with how deep it reaches; one inside is not */
+static void test_partly_outside(void)
+{
+    cube_case t;
+    if (cube_case_open(&t, 4, 4, 4)) return;
+    const double x[9] = {0.002, 0.02, 0.02,   0.02, 0.02, 0.02,   0.02, 0.0385, 0.02};
+    const double r[3] = {0.004, 0.004, 0.002};
+    const int64_t ids[3] = {7, 8, 9};
+    cdc_particles p = {3, x, r, ids, NULL};
+    cdc_kernels *k = NULL;
+    CHECK(cdc_kernels_create(t.ctx, "centre", NULL, &k) == CDC_OK, "create: %s", cdc_last_error(t.ctx));
+    CHECK(cdc_kernels_build(k, &p) == CDC_OK, "build: %s", cdc_last_error(t.ctx));
+    int32_t n = -1;
+    double depth = -1;
+    int64_t id = -2;
+    CHECK(cdc_kernels_partly_outside(k, &p, &n, &depth, &id) == CDC_OK, "%s", cdc_last_error(t.ctx));
+    /* particle 7 reaches 2 mm beyond x = 0 (half its radius), particle 9 0.5 mm beyond y = 0.04 */
+    CHECK(n == 2, "count %d (expected 2)", (int)n);
+    CHECK(fabs(depth - 0.5) <= 2e-6 && id == 7, "deepest %.7f of a radius, particle %lld (expected 0.5, 7)", depth,
+          (long long)id);
+    cdc_kernels_destroy(k);
+    cube_case_close(&t);
+}
+
 static void test_method_registry(void)
 {
     /* the list in messages names every registered method */
@@ -1372,6 +1396,7 @@ int main(void)
     run("two_ranks", test_two_ranks);
     run("parallel_matches_serial", test_parallel_matches_serial);
     run("bad_input", test_bad_input);
+    run("partly_outside", test_partly_outside);
     run("method_registry", test_method_registry);
     printf("%d passed, %d failed\n", n_pass, n_fail);
     return n_fail ? 1 : 0;

@@ -49,12 +49,13 @@ check_runs() {
     fi
 }
 
-# check_warns NAME 'sed expression' 'expected text': a setting that has no effect; the case must run
+# check_warns NAME 'sed expression' 'expected text' ['extra shell']: a setting that has no effect; the case must run
 # to its end (exit 0) and say so in its log
 check_warns() {
-    local name="$1" edit="$2" expect="$3" c="$work/$1"
+    local name="$1" edit="$2" expect="$3" extra="${4:-}" c="$work/$1"
     cp -r "$base" "$c"
     sed -i "$edit" "$c/constant/couplingProperties"
+    [ -n "$extra" ] && (cd "$c" && eval "$extra")
     (cd "$c" && timeout 120 coarseDemFoam > log 2>&1)
     local rc=$?
     if [ $rc -eq 0 ] && grep -q "^End" "$c/log" && grep -qF -- "$expect" "$c/log"; then
@@ -155,6 +156,11 @@ first_run="sed -i 's/^writeInterval .*/writeInterval 0.0005;/' system/controlDic
 check_runs restart_script_reads_restart 's/^alphaMin .*/alphaMin 0.3;/' "$first_run"
 check restart_script_ignores_restart '' "the script does not read the restart file" \
     "$first_run && sed -i 's/restarting} == 1/restarting} == 2/' DEM/in.liggghts"
+# a particle reaching through a wall is counted and reported (here 0.2 mm, 40 % of its radius)
+check_warns particle_partly_outside 's/^alphaMin .*/alphaMin 0.3;/' "Particles partly outside the mesh: 1, the deepest reaches 40" \
+    "sed -i 's/^fix *cfd.*/create_atoms 1 single 0.0003 0.005 0.045 units box\nset atom 2001 diameter 0.001 density 2500\n&/' DEM/in.liggghts"
+check mirror_patch_unknown '$a mirrorPatches ( inlett );' "mirrorPatches in" 
+check mirror_patch_unknown_lists '$a mirrorPatches ( inlett );' "inlett matches no patch of the mesh"
 check_warns deltaT_replaced_said 's/^couplingInterval .*/couplingInterval 125;/' \
     "it replaces deltaT 0.001 of"
 # a serial run ends without OpenFOAM's "Finalizing MPI, but was initialized elsewhere" warning

@@ -56,7 +56,7 @@ coarseDemCoupling::coarseDemCoupling
     allowParticleLoss_(dict_.lookupOrDefault<Switch>("allowParticleLoss", false)),
     cgFactor_(dict_.lookupOrDefault<scalar>("coarseGrainingFactor", 1)),
     fluid_{rho.value(), nu.value(), g.value()},
-    demMesh_(mesh),
+    demMesh_(mesh, dict_),
     voidFraction_(dict_, demMesh_),
     backgroundKernels_(nullptr),
     binKernels_(nullptr),
@@ -750,6 +750,24 @@ void coarseDemCoupling::report(Ostream& os) const
         << " impulse| of a coupling step last " << exchangeLastRel_ << " max " << exchangeMaxRel_
         << " x exchange; since the start net " << exchangeNet_ << " N s of " << exchangeGross_
         << " N s" << endl;
+
+    // particles reaching through the mesh boundary: a DEM wall's contact overlap (small depths), or a
+    // particle leaving the mesh (large ones); counted here, at reports only (six locations each)
+    const cdc_particles cp = {int32_t(particles_.size()), particles_.x.data(), particles_.radius.data(),
+                              reinterpret_cast<const int64_t*>(particles_.id.data()), nullptr};
+    int32_t nOut = 0;
+    double depth = 0;
+    int64_t id = -1;
+    demMesh_.check(cdc_kernels_partly_outside(voidFraction_.kernels(), &cp, &nOut, &depth, &id),
+                   "particles partly outside the mesh");
+    const label nOutAll = returnReduce(label(nOut), sumOp<label>());
+    if (nOutAll > 0)
+    {
+        const scalar deepest = returnReduce(scalar(depth), maxOp<scalar>());
+        const scalar idDeepest = returnReduce(depth == deepest ? scalar(id) : scalar(-1), maxOp<scalar>());
+        os  << "Particles partly outside the mesh: " << nOutAll << ", the deepest reaches " << 100*deepest
+            << " % of its radius beyond it (particle " << std::to_string(std::llround(idDeepest)).c_str() << ")" << endl;
+    }
 }
 
 } // End namespace Foam

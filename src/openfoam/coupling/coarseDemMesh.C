@@ -10,7 +10,7 @@
 static_assert(sizeof(Foam::label) == sizeof(int32_t), "coarse-dem needs 32-bit labels");
 static_assert(sizeof(Foam::vector) == 3*sizeof(double), "coarse-dem needs vector = 3 doubles");
 
-Foam::coarseDemMesh::coarseDemMesh(const fvMesh& mesh)
+Foam::coarseDemMesh::coarseDemMesh(const fvMesh& mesh, const dictionary& couplingDict)
 :
     mesh_(mesh),
     ctx_(nullptr)
@@ -28,13 +28,32 @@ Foam::coarseDemMesh::coarseDemMesh(const fvMesh& mesh)
         std::copy(faces[facei].begin(), faces[facei].end(), facePoints_.begin() + faceOffsets_[facei]);
     }
 
+    // patches that are walls for the DEM but inlets or outlets for the fluid (a distributor plate)
+    const wordRes mirrorPatches(couplingDict.lookupOrDefault<wordRes>("mirrorPatches", wordRes()));
+    for (const wordRe& name : mirrorPatches)
+    {
+        bool found = false;
+        for (const polyPatch& pp : mesh.boundaryMesh()) found = found || name.match(pp.name());
+        if (!found)
+        {
+            FatalIOErrorInFunction(couplingDict)
+                << "entry mirrorPatches in " << couplingDict.name() << ": " << name
+                << " matches no patch of the mesh" << nl << "    patches: " << mesh.boundaryMesh().names()
+                << exit(FatalIOError);
+        }
+    }
+
     const label nInternal = mesh.nInternalFaces();
     boundaryKind_.assign(mesh.nFaces() - nInternal, CDC_FACE_OTHER);
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
         uint8_t kind = CDC_FACE_OTHER;
         // a symmetry plane mirrors the flow, so kernels mirror across it like across a wall
-        if (isA<wallPolyPatch>(pp) || isA<symmetryPolyPatch>(pp) || isA<symmetryPlanePolyPatch>(pp))
+        if
+        (
+            isA<wallPolyPatch>(pp) || isA<symmetryPolyPatch>(pp) || isA<symmetryPlanePolyPatch>(pp)
+         || mirrorPatches.match(pp.name())
+        )
         {
             kind = CDC_FACE_WALL;
         }
