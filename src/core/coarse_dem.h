@@ -114,6 +114,12 @@ typedef struct cdc_kernels cdc_kernels;
  * volumes, consistent addressing) and builds cell-face and cell-cell adjacency and spatial bins. */
 cdc_status cdc_context_create(const cdc_mesh *mesh, cdc_context **out);
 void cdc_context_destroy(cdc_context *ctx);
+/* The wall facets the wall-aware kernels mirror across: n faces, each its centre, area vector
+ * (pointing out of the mesh) and the centre of its owner cell (3 n doubles each, copied). A context
+ * starts with the wall faces of its own mesh; in parallel give every rank those of the whole mesh,
+ * so that a kernel crossing a processor boundary mirrors as in a serial run on a curved wall. */
+cdc_status cdc_context_set_wall_facets(cdc_context *ctx, int32_t n, const double *centres, const double *areas,
+                                       const double *owner_centres);
 /* Message of the last error on this context (or of cdc_context_create when ctx is NULL). */
 const char *cdc_last_error(const cdc_context *ctx);
 /* Message of the last cdc_context_create failure, for the caller that got no context back. */

@@ -171,9 +171,6 @@ static void build_boxes(cdc_context *ctx)
         bb[3] = bb[4] = bb[5] = -INFINITY;
         for (int32_t q = ctx->cell_face_offsets[c]; q < ctx->cell_face_offsets[c + 1]; ++q) {
             const int32_t f = ctx->cell_faces[q];
-            if (f >= m->n_internal_faces &&
-                m->boundary_face_kind[f - m->n_internal_faces] == CDC_FACE_WALL)
-                ctx->cell_has_wall[c] = 1;
             for (int32_t k = m->face_point_offsets[f]; k < m->face_point_offsets[f + 1]; ++k) {
                 const double *x = m->points + 3 * (size_t)m->face_points[k];
                 for (int d = 0; d < 3; ++d) {
@@ -206,12 +203,14 @@ cdc_status cdc_context_create(const cdc_mesh *mesh, cdc_context **out)
         const size_t nc = (size_t)mesh->n_cells;
         ctx->cell_bbox = malloc(6 * nc * sizeof(double));
         ctx->cell_is_box = calloc(nc, 1);
-        ctx->cell_has_wall = calloc(nc, 1);
         ctx->stamp = calloc(nc, sizeof(int32_t));
-        if (!ctx->cell_bbox || !ctx->cell_is_box || !ctx->cell_has_wall || !ctx->stamp)
+        if (!ctx->cell_bbox || !ctx->cell_is_box || !ctx->stamp)
             st = cdc_fail(NULL, CDC_ERR_NOMEM, "mesh: out of memory for cell boxes");
         else
             build_boxes(ctx);
+    }
+    if (st == CDC_OK && cdc_wall_facets_from_mesh(ctx) != CDC_OK) {
+        st = cdc_fail(NULL, CDC_ERR_NOMEM, "mesh: %s", ctx->msg);
     }
     if (st != CDC_OK) {
         cdc_context_destroy(ctx);
@@ -230,7 +229,9 @@ void cdc_context_destroy(cdc_context *ctx)
     free(ctx->cell_cells);
     free(ctx->cell_bbox);
     free(ctx->cell_is_box);
-    free(ctx->cell_has_wall);
+    free(ctx->facet_data);
+    free(ctx->facet_offsets);
+    free(ctx->facet_items);
     free(ctx->bin_offsets);
     free(ctx->bin_cells);
     free(ctx->stamp);

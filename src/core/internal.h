@@ -64,9 +64,16 @@ struct cdc_context {
     /* per cell: axis-aligned bounding box (lo xyz, hi xyz) and whether the cell IS that box */
     double *cell_bbox;
     uint8_t *cell_is_box;
-    uint8_t *cell_has_wall;  /* cell owns at least one wall face */
     double mesh_lo[3], mesh_hi[3];
     double total_volume;
+
+    /* wall facets for mirroring (wall_facets.c): per facet origin, unit normal, owner cell centre;
+     * binned by owner centre */
+    int32_t n_facets;
+    double *facet_data;
+    double facet_lo[3], facet_bin;
+    int32_t facet_nbin[3];
+    int32_t *facet_offsets, *facet_items;
 
     /* spatial bins for the location fallback, built on first need */
     int bins_built;
@@ -141,12 +148,19 @@ const cdc_method *cdc_find_method(const char *name);
 
 /* Cells whose centre lies within `radius` of x, found by flood fill from the start cell across
  * faces. The start cell is included too (the host of a particle), unless seed_only (a ghost's
- * start cell, included only if it qualifies). When planes != NULL (room for CDC_MAX_WALL_FACETS),
- * the planes of the wall faces of visited cells closer than `radius` to x are collected
- * (deduplicated); more than CDC_MAX_WALL_FACETS distinct planes is CDC_ERR_UNSUPPORTED.
- * cdc_nearest_wall_planes() then keeps the mirror planes among them. */
+ * start cell, included only if it qualifies). */
 cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t start, int seed_only, double radius,
-                            cdc_ivec *cells, cdc_plane *planes, int *n_planes);
+                            cdc_ivec *cells);
+
+/* The context's wall facets from its own mesh's wall faces (at creation; wall_facets.c). */
+cdc_status cdc_wall_facets_from_mesh(cdc_context *ctx);
+
+/* The planes of the wall facets within `radius` of x (owner cell centre within it, plane closer
+ * than it), deduplicated (a flat wall's faces are one plane), into planes[] (room for
+ * CDC_MAX_WALL_FACETS; more is CDC_ERR_UNSUPPORTED). cdc_nearest_wall_planes() then keeps the
+ * mirror planes among them. */
+cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radius, cdc_plane *planes,
+                                int *n_planes);
 
 /* Cells whose bounding box overlaps the sphere (x, radius), by flood fill from the start cell. */
 cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t start, int seed_only,

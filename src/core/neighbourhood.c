@@ -1,7 +1,8 @@
 /*
  * neighbourhood.c -- the cells around a particle, by flood fill across faces from its host cell
  * (the cell-topology search of Zhang et al. 2023 §II.B, the "linked-list search" of §II.E),
- * and the wall planes the wall-aware kernels mirror across.
+ * and the choice and images of the wall planes the wall-aware kernels mirror across (the planes
+ * near a particle are found in wall_facets.c).
  */
 #include "internal.h"
 
@@ -33,40 +34,14 @@ static double plane_offset(const cdc_plane *p, const double x[3])
            (x[2] - p->origin[2]) * p->normal[2];
 }
 
-/* Add the plane of wall face f if it is within `radius` of x and not yet known; -1 if it would be
- * one more than CDC_MAX_WALL_FACETS. */
-static int collect_plane(const cdc_mesh *m, int32_t f, const double x[3], double radius, cdc_plane *planes,
-                         int *n_planes)
-{
-    const double *S = m->face_areas + 3 * (size_t)f, *C = m->face_centres + 3 * (size_t)f;
-    const double mag = sqrt(S[0] * S[0] + S[1] * S[1] + S[2] * S[2]);
-    const double n[3] = {S[0] / mag, S[1] / mag, S[2] / mag};
-    const double dist = (C[0] - x[0]) * n[0] + (C[1] - x[1]) * n[1] + (C[2] - x[2]) * n[2];
-    if (dist >= radius) return 0;
-    for (int k = 0; k < *n_planes; ++k) {
-        const cdc_plane *q = planes + k;
-        const double dn = n[0] * q->normal[0] + n[1] * q->normal[1] + n[2] * q->normal[2];
-        if (dn > 1.0 - 1e-9 && fabs(plane_offset(q, C)) <= 1e-9 * radius) return 0; /* same plane */
-    }
-    if (*n_planes >= CDC_MAX_WALL_FACETS) return -1;
-    cdc_plane *p = planes + (*n_planes)++;
-    for (int d = 0; d < 3; ++d) {
-        p->origin[d] = C[d];
-        p->normal[d] = n[d];
-    }
-    return 0;
-}
-
 /* Breadth-first over the face neighbours: the cells accepted form the neighbourhood; the search
  * expands from them and from the start cell (which may itself lie outside, seed_only). A cell is
  * tested when first seen and queued only if accepted, so the rejected rim costs one test each. */
 static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, int seed_only, double radius,
-                        enum accept_kind kind, cdc_ivec *cells, cdc_plane *planes, int *n_planes)
+                        enum accept_kind kind, cdc_ivec *cells)
 {
-    const cdc_mesh *m = ctx->mesh;
     const int32_t s = cdc_next_stamp(ctx);
     cells->n = 0;
-    if (n_planes) *n_planes = 0;
     ctx->queue.n = 0;
     if (cdc_ivec_push(&ctx->queue, host)) return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory in cell search");
     ctx->stamp[host] = s;
@@ -75,18 +50,6 @@ static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, int s
         const int32_t c = ctx->queue.v[head];
         const int member = c != host || host_member; /* every other queued cell was accepted */
         if (member && cdc_ivec_push(cells, c)) return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory in cell search");
-        if (member && planes && ctx->cell_has_wall[c])
-            for (int32_t q = ctx->cell_face_offsets[c]; q < ctx->cell_face_offsets[c + 1]; ++q) {
-                const int32_t f = ctx->cell_faces[q];
-                if (f >= m->n_internal_faces &&
-                    m->boundary_face_kind[f - m->n_internal_faces] == CDC_FACE_WALL &&
-                    collect_plane(m, f, x, radius, planes, n_planes))
-                    return cdc_fail(ctx, CDC_ERR_UNSUPPORTED,
-                                    "wallMirror: more than %d distinct wall-face planes within %g m of (%g %g %g) "
-                                    "(a wall more finely faceted than the kernel can mirror: a larger mesh cell "
-                                    "at the wall, a smaller kernel, or wallMirror false)",
-                                    CDC_MAX_WALL_FACETS, radius, x[0], x[1], x[2]);
-            }
         for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
             const int32_t nb = ctx->cell_cells[q];
             if (ctx->stamp[nb] == s) continue;
@@ -99,15 +62,15 @@ static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, int s
 }
 
 cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t start, int seed_only, double radius,
-                            cdc_ivec *cells, cdc_plane *planes, int *n_planes)
+                            cdc_ivec *cells)
 {
-    return flood(ctx, x, start, seed_only, radius, CENTRE_WITHIN, cells, planes, n_planes);
+    return flood(ctx, x, start, seed_only, radius, CENTRE_WITHIN, cells);
 }
 
 cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t start, int seed_only,
                                  double radius, cdc_ivec *cells)
 {
-    return flood(ctx, x, start, seed_only, radius, BOX_OVERLAPS, cells, NULL, NULL);
+    return flood(ctx, x, start, seed_only, radius, BOX_OVERLAPS, cells);
 }
 
 /* Order of the facets for cdc_nearest_wall_planes: nearer first; equal distances by normal. */

@@ -44,6 +44,17 @@ for h in ("15", "16.4", "20", "25", "31.2", "35"):
         print(("PASS" if ok else "FAIL") + f": {tag} profile {q} z = {h} mm ({len(vals)} points, "
               f"{undefined} without solid)")
         status |= not ok
+# depth-averaged profiles (every cell column across the thickness, particles binned by the cell of
+# their centre): one point per cell across the width at every height
+for h in ("15", "16.4", "20", "25", "31.2", "35"):
+    gas = profile("voidfractiondepthbinned", h)
+    for q in ("voidfractiondepthbinned", "vzdepthbinned", "voidfractiondepth"):
+        vals = profile(q, h)
+        ok = len(vals) == ny and len(gas) == ny and all(
+            math.isfinite(v) or (v != v and q == "vzdepthbinned" and g > 0.5) for v, g in zip(vals, gas)) and \
+            all(0 <= g <= 1 for g in gas)
+        print(("PASS" if ok else "FAIL") + f": {tag} profile {q} z = {h} mm ({len(vals)} points of {ny})")
+        status |= not ok
 log = open(os.path.join(run, "log.coarseDemFoam")).read()
 m = re.findall(r"^End: Coupling: particles (\d+), .*?rel\. err ([0-9.eE+-]+)\)", log, re.M)
 ok = bool(m) and int(m[-1][0]) == 9240 and float(m[-1][1]) <= 1e-12

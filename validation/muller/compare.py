@@ -39,7 +39,9 @@ def interp(x, xs, ys):
             return ys[i - 1] + t * (ys[i] - ys[i - 1])
 
 QUANTITY = {"voidfraction": "void_fraction", "vz": "vz_particle_m_per_s",
-            "vzbinned": "vz_particle_binned_m_per_s"}
+            "vzbinned": "vz_particle_binned_m_per_s",
+            "voidfractiondepthbinned": "void_fraction_depth_binned", "vzdepthbinned": "vz_particle_depth_binned_m_per_s",
+            "voidfractiondepth": "void_fraction_depth"}
 
 def compare_one(data_path, sim_path, q, h, U, out):
     """RMS and maximum error of one simulated profile against one data file, and its PNG."""
@@ -72,7 +74,10 @@ def compare_one(data_path, sim_path, q, h, U, out):
         ax.plot([x * 1e3 for x in dx], dy, "ko", ms=4, label="Müller et al. (MR)")
         ax.set_xlabel("distance from the left wall (mm)")
         ax.set_ylabel({"voidfraction": "time-averaged gas fraction", "vz": "time-averaged particle v_z (m/s)",
-                       "vzbinned": "time-averaged particle v_z, binned (m/s)"}.get(q, q))
+                       "vzbinned": "time-averaged particle v_z, binned (m/s)",
+                       "voidfractiondepthbinned": "gas fraction, depth-averaged, binned",
+                       "vzdepthbinned": "particle v_z, depth-averaged, binned (m/s)",
+                       "voidfractiondepth": "gas fraction, depth-averaged"}.get(q, q))
         ax.set_title(f"U = {U} m/s, z = {h} mm: RMS {rms:.3g}")
         ax.legend(fontsize=8)
         fig.tight_layout()
@@ -93,8 +98,9 @@ def compare(results, data_dir, U, out):
         q_data, h = m.group(2), m.group(3)
         if not os.path.exists(os.path.join(results, f"profile_{q_data}_z{h}mm.csv")):
             print(f"compare.py: no simulated profile profile_{q_data}_z{h}mm.csv in {results} for {os.path.basename(path)}")
-        # the data's quantity and the variants the run may also have (vzbinned: binned particles)
-        for q in (q_data, q_data + "binned"):
+        # the data's quantity and the variants the run may also have (binned: particles counted in
+        # the cell of their centre; depth: averaged over the thickness, as the MR data are)
+        for q in (q_data, q_data + "binned", q_data + "depthbinned", q_data + "depth"):
             sim_path = os.path.join(results, f"profile_{q}_z{h}mm.csv")
             if os.path.exists(sim_path):
                 rows.append(compare_one(path, sim_path, q, h, U, out))

@@ -21,8 +21,14 @@ Fewer than two such batches: no error bar (sem nan). Batches much longer than th
 means (mean over the profile's points) is written to profiles_info.txt and a warning printed above
 0.3 (a circulation slower than a batch: the SEM is then too small). Samples beyond B whole batches
 are not used, and the info says how many.
+Depth averages: when the case also has the `depthProfiles` function object (system/depthProfiles,
+written by Allrun: one line of cell values per cell column across the 10 mm thickness at each
+height), the profiles averaged over the depth are written too, as Mueller et al.'s MR profiles
+average over the bed's depth: profile_voidfractiondepthbinned and profile_vzdepthbinned (from the
+particles binned by the cell of their centre: the same instrument whatever the method under test;
+the headline of the comparison) and profile_voidfractiondepth (the method's own alpha).
 Writes <case>/results/profile_voidfraction_z<h>mm.csv and profile_vz_z<h>mm.csv (x_m = distance
-from the left wall, value, sem) and results/profiles_info.txt. Samples from restarted runs (the
+from the left wall, value, sem), the depth-averaged ones, and results/profiles_info.txt. Samples from restarted runs (the
 same time written twice, or the stretch between a stopped run's last write and its stop sampled
 again by the continued run) are counted once (drop_superseded).
 """
@@ -69,35 +75,54 @@ def read_set(path):
     rows = [[float(v) for v in re.split(r"[,\s]+", l)] for l in lines[1:] if not l.startswith("#")]
     return header, rows
 
-def main():
-    args = sys.argv[1:]
-    if len(args) < 3:
-        sys.exit(__doc__)
-    nb, min_batch = 10, 5
-    if "--batches" in args:
-        i = args.index("--batches"); nb = int(args[i + 1]); del args[i:i + 2]
-    if "--min-batch" in args:
-        i = args.index("--min-batch"); min_batch = int(args[i + 1]); del args[i:i + 2]
-    case, t0, t1 = args[0], float(args[1]), float(args[2])
-    base = os.path.join(case, "postProcessing", "profiles")
+def read_series(base, t0, t1):
+    """The samples of one sets function object in (t0, t1]: {set name: {time: {column: values}}},
+    the times used and the superseded ones dropped in the window."""
     dirs = {float(os.path.basename(d)): d for d in glob.glob(os.path.join(base, "*"))}
     dirs, superseded = drop_superseded(dirs)
     times = sorted(t for t in dirs if t0 < t <= t1 + 1e-9)
-    if not times:
-        sys.exit(f"profiles.py: no samples in ({t0}, {t1}] under {base}")
-    dropped = [t for t in superseded if t0 < t <= t1 + 1e-9]   # reported with the info at the end
-    # per set: list over time of (y, alpha, alphaP, UsZ*alphaP)
     series = {}
     for t in times:
         for path in glob.glob(os.path.join(dirs[t], "z*.csv")):
-            name = os.path.basename(path)
-            setname = name.split("_")[0]
+            setname = os.path.basename(path).split("_")[0]
             header, rows = read_set(path)
             rec = series.setdefault(setname, {}).setdefault(t, {})
             for j, col in enumerate(header):
                 rec[col] = [r[j] for r in rows]
-    os.makedirs(os.path.join(case, "results"), exist_ok=True)
-    info = []
+    return series, times, [t for t in superseded if t0 < t <= t1 + 1e-9]
+
+
+def depth_average(series):
+    """Sets z<h>d<i> (one per cell column across the thickness, the same y points) -> one set z<h>
+    per height whose columns are the means over the columns i at each y and time: what a
+    measurement through the bed's depth sees (Mueller et al.'s MR profiles are depth averages)."""
+    out = {}
+    for name, byt in series.items():
+        m = re.match(r"(z[0-9.]+)d(\d+)$", name)
+        if not m:
+            continue
+        dst = out.setdefault(m.group(1), {})
+        for t, rec in byt.items():
+            acc = dst.setdefault(t, {"_n": 0})
+            for col, vals in rec.items():
+                if col in ("y", "distance"):
+                    acc[col] = vals
+                else:
+                    acc[col] = [a + v for a, v in zip(acc[col], vals)] if col in acc else list(vals)
+            acc["_n"] += 1
+    for byt in out.values():
+        for rec in byt.values():
+            n = rec.pop("_n")
+            for col in rec:
+                if col not in ("y", "distance"):
+                    rec[col] = [v / n for v in rec[col]]
+    return out
+
+
+def write_profiles(case, series, t0, t1, nb, min_batch, variants, info, lag1_all):
+    """For each set (height) and each variant (name, what, column name, needed columns, mean
+    function builder) whose columns the samples have: the time mean over B whole batches and the
+    batch-means SEM, written to results/profile_<name>_z<h>mm.csv."""
     for setname, byt in sorted(series.items()):
         h = setname[1:]
         ts = sorted(byt)
@@ -108,8 +133,6 @@ def main():
         used = B * size
         dt = (ts[-1] - ts[0]) / (n - 1) if n > 1 else float("nan")
         lag1 = {}
-        def column(t, key):
-            return byt[t][key]
         def batch_stats(name, values_fn):
             """values_fn(list of times) -> per-point value; mean over the used samples, batch-means
             SEM per point (nan below two batches), and the batch means' lag-1 correlation"""
@@ -128,41 +151,92 @@ def main():
                     corr.append(sum((xs[b] - mu) * (xs[b + 1] - mu) for b in range(B - 1)) / ((B - 1) * var))
             lag1[name] = sum(corr) / len(corr) if corr else float("nan")
             return allv, sem
-        def mean_alpha(tl):
-            return [sum(column(t, "alpha")[k] for t in tl) / len(tl) for k in range(len(y))]
-        def mean_ratio(num_key, den_key):
-            def mean(tl):
-                out = []
-                for k in range(len(y)):
-                    num = sum(column(t, num_key)[k] for t in tl)
-                    den = sum(column(t, den_key)[k] for t in tl)
-                    out.append(num / den if den > 1e-12 else float("nan"))
-                return out
-            return mean
-        def write(name, what, column_name, mean_fn):
-            v, e = batch_stats(name, mean_fn)
+        for name, what, column_name, needs, builder in variants:
+            if not all(c in byt[ts[0]] for c in needs):
+                continue
+            v, e = batch_stats(name, builder(byt, len(y)))
             with open(os.path.join(case, "results", f"profile_{name}_z{h}mm.csv"), "w") as f:
                 f.write(f"# time-averaged {what}, z = {h} mm, window ({t0}, {t1}] s, {used} of {n} samples, "
                         f"{B} batches of {size}\n")
                 f.write(f"x_m,{column_name},sem\n")
                 for k in range(len(y)):
                     f.write(f"{y[k]:.6g},{v[k]:.6g},{e[k]:.3g}\n")
-        if "alpha" in byt[ts[0]]:
-            write("voidfraction", "gas volume fraction", "void_fraction", mean_alpha)
-        if "alphaPUs_2" in byt[ts[0]] and "alphaP" in byt[ts[0]]:
-            write("vz", "(solid-weighted) vertical particle velocity", "vz_particle_m_per_s",
-                  mean_ratio("alphaPUs_2", "alphaP"))
-        if "alphaPUsBinned_2" in byt[ts[0]] and "alphaPBinned" in byt[ts[0]]:
-            write("vzbinned", "(solid-weighted) vertical particle velocity, particles binned by their centre's cell",
-                  "vz_particle_m_per_s", mean_ratio("alphaPUsBinned_2", "alphaPBinned"))
         corr = ", ".join(f"{k} {c:.2f}" for k, c in sorted(lag1.items()))
         info.append(f"z = {h} mm: {n} samples in ({t0}, {t1}] s (every {dt:.3g} s), {used} used in {B} batches of "
                     f"{size} ({size * dt:.3g} s)" + ("" if B > 1 else ": too few for an error bar (sem nan)")
                     + f"; lag-1 correlation of the batch means: {corr}")
-        for k, c in sorted(lag1.items()):
-            if c > 0.3:
-                print(f"profiles.py: warning: z = {h} mm {k}: batch means correlated ({c:.2f} > 0.3), "
-                      "the SEM is too small (a slow circulation: a longer window or longer batches)")
+        lag1_all.extend((h, k, c) for k, c in sorted(lag1.items()))
+
+
+def mean_of(key, transform=lambda v: v):
+    """time mean of column key (transformed per value, e.g. 1 - alphaPBinned)"""
+    def builder(byt, npts):
+        return lambda tl: [sum(transform(byt[t][key][k]) for t in tl) / len(tl) for k in range(npts)]
+    return builder
+
+
+def ratio_of(num_key, den_key):
+    """solid-weighted mean: sum over time of num / sum of den, per point"""
+    def builder(byt, npts):
+        def mean(tl):
+            out = []
+            for k in range(npts):
+                num = sum(byt[t][num_key][k] for t in tl)
+                den = sum(byt[t][den_key][k] for t in tl)
+                out.append(num / den if den > 1e-12 else float("nan"))
+            return out
+        return mean
+    return builder
+
+
+# (name, what, column, columns needed, mean builder); mid-thickness, as sampled by `profiles`
+MID_THICKNESS = [
+    ("voidfraction", "gas volume fraction", "void_fraction", ["alpha"], mean_of("alpha")),
+    ("vz", "(solid-weighted) vertical particle velocity", "vz_particle_m_per_s", ["alphaPUs_2", "alphaP"],
+     ratio_of("alphaPUs_2", "alphaP")),
+    ("vzbinned", "(solid-weighted) vertical particle velocity, particles binned by their centre's cell",
+     "vz_particle_m_per_s", ["alphaPUsBinned_2", "alphaPBinned"], ratio_of("alphaPUsBinned_2", "alphaPBinned")),
+]
+# depth averages of the cell values across the thickness, as sampled by `depthProfiles`; the binned
+# ones count each particle in the cell of its centre, the same instrument for every method
+DEPTH = [
+    ("voidfractiondepthbinned", "gas volume fraction, depth-averaged, particles binned by their centre's cell",
+     "void_fraction", ["alphaPBinned"], mean_of("alphaPBinned", lambda v: 1.0 - v)),
+    ("vzdepthbinned", "(solid-weighted) vertical particle velocity, depth-averaged, particles binned by their "
+     "centre's cell", "vz_particle_m_per_s", ["alphaPUsBinned_2", "alphaPBinned"],
+     ratio_of("alphaPUsBinned_2", "alphaPBinned")),
+    ("voidfractiondepth", "gas volume fraction of the method under test, depth-averaged", "void_fraction",
+     ["alpha"], mean_of("alpha")),
+]
+
+
+def main():
+    args = sys.argv[1:]
+    if len(args) < 3:
+        sys.exit(__doc__)
+    nb, min_batch = 10, 5
+    if "--batches" in args:
+        i = args.index("--batches"); nb = int(args[i + 1]); del args[i:i + 2]
+    if "--min-batch" in args:
+        i = args.index("--min-batch"); min_batch = int(args[i + 1]); del args[i:i + 2]
+    case, t0, t1 = args[0], float(args[1]), float(args[2])
+    base = os.path.join(case, "postProcessing", "profiles")
+    series, times, dropped = read_series(base, t0, t1)
+    if not times:
+        sys.exit(f"profiles.py: no samples in ({t0}, {t1}] under {base}")
+    os.makedirs(os.path.join(case, "results"), exist_ok=True)
+    info, lag1 = [], []
+    write_profiles(case, series, t0, t1, nb, min_batch, MID_THICKNESS, info, lag1)
+    depth_base = os.path.join(case, "postProcessing", "depthProfiles")
+    if os.path.isdir(depth_base):
+        dseries, dtimes, _ = read_series(depth_base, t0, t1)
+        if dtimes:
+            info.append("depth-averaged (every cell column across the thickness):")
+            write_profiles(case, depth_average(dseries), t0, t1, nb, min_batch, DEPTH, info, lag1)
+    for h, k, c in lag1:
+        if c > 0.3:
+            print(f"profiles.py: warning: z = {h} mm {k}: batch means correlated ({c:.2f} > 0.3), "
+                  "the SEM is too small (a slow circulation: a longer window or longer batches)")
     if dropped:
         info.append(f"{len(dropped)} sample(s) of a stopped segment, superseded by the continued run, not used: "
                     + ", ".join("%g" % t for t in dropped))

@@ -86,7 +86,51 @@ Foam::coarseDemMesh::coarseDemMesh(const fvMesh& mesh, const dictionary& couplin
             << "mesh " << mesh.polyMesh::path() << ": " << cdc_create_error() << nl
             << "    (check the mesh with checkMesh)" << exit(FatalError);
     }
-    if (Pstream::parRun()) setHalo();
+    if (Pstream::parRun())
+    {
+        setHalo();
+        setGlobalWallFacets();
+    }
+}
+
+// Every rank gets the wall faces of the whole mesh (centre, area, owner cell centre), so that the
+// kernels of particles near a processor boundary choose their mirror facets among the same faces
+// as in a serial run (on a curved wall the nearest facet may be in the other rank's part).
+void Foam::coarseDemMesh::setGlobalWallFacets()
+{
+    const label nInternal = mesh_.nInternalFaces();
+    List<List<vector>> facets(Pstream::nProcs());   // per rank: centre, area, owner centre per face
+    DynamicList<vector> mine;
+    for (label f = nInternal; f < mesh_.nFaces(); ++f)
+    {
+        if (boundaryKind_[f - nInternal] != CDC_FACE_WALL) continue;
+        mine.append(mesh_.faceCentres()[f]);
+        mine.append(mesh_.faceAreas()[f]);
+        mine.append(mesh_.cellCentres()[mesh_.faceOwner()[f]]);
+    }
+    facets[Pstream::myProcNo()].transfer(mine);
+    Pstream::gatherList(facets);
+    Pstream::scatterList(facets);
+    label n = 0;
+    for (const List<vector>& l : facets) n += l.size()/3;
+    std::vector<double> centres, areas, owners;
+    centres.reserve(3*n);
+    areas.reserve(3*n);
+    owners.reserve(3*n);
+    for (const List<vector>& l : facets)
+    {
+        for (label i = 0; i < l.size(); i += 3)
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                centres.push_back(l[i][d]);
+                areas.push_back(l[i + 1][d]);
+                owners.push_back(l[i + 2][d]);
+            }
+        }
+    }
+    check(cdc_context_set_wall_facets(ctx_, int32_t(n), centres.data(), areas.data(), owners.data()),
+          "wall facets of the whole mesh");
 }
 
 void Foam::coarseDemMesh::setHalo()

@@ -1,0 +1,175 @@
+/*
+ * wall_facets.c -- the wall faces that the wall-aware kernels mirror across, found by position.
+ *
+ * A facet is a wall face's plane (centre, outward unit normal) and the centre of the cell that owns
+ * it. A kernel of radius R around x takes the facets whose owner's centre lies within R of x (the
+ * cells such a kernel covers) and whose plane is closer than R; cdc_nearest_wall_planes then keeps
+ * the mirror planes among them. The facets are this rank's own wall faces unless the caller gives
+ * the context those of the whole mesh (cdc_context_set_wall_facets): then a kernel crossing a
+ * processor boundary mirrors across the same facets on every rank, as in a serial run, also when
+ * the facet nearest to it lies in another rank's part of a curved wall.
+ *
+ * The facets are found through a uniform grid over their owners' centres, with bins of about two
+ * wall cells, so a query costs the few bins around the kernel, not a pass over the wall.
+ */
+#include "internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int32_t bin_of(const cdc_context *ctx, int d, double v)
+{
+    const double s = (v - ctx->facet_lo[d]) / ctx->facet_bin;
+    const int32_t b = s < 0 ? 0 : (int32_t)s;
+    return b >= ctx->facet_nbin[d] ? ctx->facet_nbin[d] - 1 : b;
+}
+
+static size_t bin_index(const cdc_context *ctx, int32_t i, int32_t j, int32_t k)
+{
+    return ((size_t)k * (size_t)ctx->facet_nbin[1] + (size_t)j) * (size_t)ctx->facet_nbin[0] + (size_t)i;
+}
+
+/* Take n facets (copied) and bin them. */
+static cdc_status store_facets(cdc_context *ctx, int32_t n, const double *centres, const double *areas,
+                               const double *owners)
+{
+    free(ctx->facet_data);
+    free(ctx->facet_offsets);
+    free(ctx->facet_items);
+    ctx->facet_data = NULL;
+    ctx->facet_offsets = ctx->facet_items = NULL;
+    ctx->n_facets = 0;
+    if (n <= 0) return CDC_OK;
+
+    ctx->facet_data = malloc(9 * (size_t)n * sizeof(double));
+    if (!ctx->facet_data) return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, gap = 0.0;
+    for (int32_t f = 0; f < n; ++f) {
+        double *q = ctx->facet_data + 9 * (size_t)f; /* origin, unit normal, owner centre */
+        const double *S = areas + 3 * (size_t)f;
+        const double mag = sqrt(S[0] * S[0] + S[1] * S[1] + S[2] * S[2]);
+        if (!(mag > 0.0)) return cdc_fail(ctx, CDC_ERR_ARGUMENT, "wall facets: facet %d has no area", (int)f);
+        for (int d = 0; d < 3; ++d) {
+            q[d] = centres[3 * (size_t)f + d];
+            q[3 + d] = S[d] / mag;
+            q[6 + d] = owners[3 * (size_t)f + d];
+            lo[d] = fmin(lo[d], q[6 + d]);
+            hi[d] = fmax(hi[d], q[6 + d]);
+        }
+        gap += sqrt(cdc_dist2(q, q + 6));
+    }
+    ctx->n_facets = n;
+    /* bins of about two wall cells (the owner is half a cell from its face), fewer if that would
+     * make more bins than a few per facet */
+    double h = 4.0 * gap / n;
+    for (;;) {
+        size_t total = 1;
+        for (int d = 0; d < 3; ++d) {
+            ctx->facet_nbin[d] = (int32_t)fmin(1024.0, floor((hi[d] - lo[d]) / h) + 1.0);
+            total *= (size_t)ctx->facet_nbin[d];
+        }
+        if (total <= 4 * (size_t)n + 64) break;
+        h *= 1.5;
+    }
+    ctx->facet_bin = h;
+    for (int d = 0; d < 3; ++d) ctx->facet_lo[d] = lo[d];
+    const size_t nb = (size_t)ctx->facet_nbin[0] * (size_t)ctx->facet_nbin[1] * (size_t)ctx->facet_nbin[2];
+    ctx->facet_offsets = calloc(nb + 1, sizeof(int32_t));
+    ctx->facet_items = malloc((size_t)n * sizeof(int32_t));
+    if (!ctx->facet_offsets || !ctx->facet_items) return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
+    size_t *bin = malloc((size_t)n * sizeof *bin);
+    if (!bin) return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
+    for (int32_t f = 0; f < n; ++f) {
+        const double *o = ctx->facet_data + 9 * (size_t)f + 6;
+        bin[f] = bin_index(ctx, bin_of(ctx, 0, o[0]), bin_of(ctx, 1, o[1]), bin_of(ctx, 2, o[2]));
+        ++ctx->facet_offsets[bin[f] + 1];
+    }
+    for (size_t b = 0; b < nb; ++b) ctx->facet_offsets[b + 1] += ctx->facet_offsets[b];
+    for (int32_t f = 0; f < n; ++f) ctx->facet_items[ctx->facet_offsets[bin[f]]++] = f; /* by facet index */
+    for (size_t b = nb; b > 0; --b) ctx->facet_offsets[b] = ctx->facet_offsets[b - 1];
+    ctx->facet_offsets[0] = 0;
+    free(bin);
+    return CDC_OK;
+}
+
+cdc_status cdc_wall_facets_from_mesh(cdc_context *ctx)
+{
+    const cdc_mesh *m = ctx->mesh;
+    const int32_t nb = m->n_faces - m->n_internal_faces;
+    int32_t n = 0;
+    for (int32_t b = 0; b < nb; ++b) n += m->boundary_face_kind[b] == CDC_FACE_WALL;
+    double *buf = malloc(9 * (size_t)(n > 0 ? n : 1) * sizeof(double));
+    if (!buf) return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
+    int32_t k = 0;
+    for (int32_t b = 0; b < nb; ++b) {
+        if (m->boundary_face_kind[b] != CDC_FACE_WALL) continue;
+        const int32_t f = m->n_internal_faces + b;
+        memcpy(buf + 3 * (size_t)k, m->face_centres + 3 * (size_t)f, 3 * sizeof(double));
+        memcpy(buf + 3 * (size_t)(n + k), m->face_areas + 3 * (size_t)f, 3 * sizeof(double));
+        memcpy(buf + 3 * (size_t)(2 * n + k), m->cell_centres + 3 * (size_t)m->owner[f], 3 * sizeof(double));
+        ++k;
+    }
+    const cdc_status st = store_facets(ctx, n, buf, buf + 3 * (size_t)n, buf + 6 * (size_t)n);
+    free(buf);
+    return st;
+}
+
+cdc_status cdc_context_set_wall_facets(cdc_context *ctx, int32_t n, const double *centres, const double *areas,
+                                       const double *owner_centres)
+{
+    if (!ctx) return CDC_ERR_ARGUMENT;
+    if (n < 0 || (n > 0 && (!centres || !areas || !owner_centres)))
+        return cdc_fail(ctx, CDC_ERR_ARGUMENT, "cdc_context_set_wall_facets: %d facets without their data", (int)n);
+    return store_facets(ctx, n, centres, areas, owner_centres);
+}
+
+/* Signed distance of x from the plane, positive on the side its normal points to (outside). */
+static double offset(const double *plane, const double x[3])
+{
+    return (x[0] - plane[0]) * plane[3] + (x[1] - plane[1]) * plane[4] + (x[2] - plane[2]) * plane[5];
+}
+
+cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radius, cdc_plane *planes,
+                                int *n_planes)
+{
+    *n_planes = 0;
+    if (ctx->n_facets == 0) return CDC_OK;
+    int32_t b0[3], b1[3];
+    for (int d = 0; d < 3; ++d) {
+        b0[d] = bin_of(ctx, d, x[d] - radius);
+        b1[d] = bin_of(ctx, d, x[d] + radius);
+    }
+    const double r2 = radius * radius * CDC_RADIUS_SLACK;
+    for (int32_t k = b0[2]; k <= b1[2]; ++k)
+        for (int32_t j = b0[1]; j <= b1[1]; ++j)
+            for (int32_t i = b0[0]; i <= b1[0]; ++i) {
+                const size_t b = bin_index(ctx, i, j, k);
+                for (int32_t q = ctx->facet_offsets[b]; q < ctx->facet_offsets[b + 1]; ++q) {
+                    const double *fc = ctx->facet_data + 9 * (size_t)ctx->facet_items[q];
+                    if (cdc_dist2(fc + 6, x) > r2 || -offset(fc, x) >= radius) continue;
+                    int known = 0; /* the same plane as one already taken (a flat wall's faces) */
+                    for (int p = 0; p < *n_planes && !known; ++p) {
+                        const cdc_plane *o = planes + p;
+                        const double dn = fc[3] * o->normal[0] + fc[4] * o->normal[1] + fc[5] * o->normal[2];
+                        const double *oc = o->origin;
+                        const double sep = (fc[0] - oc[0]) * o->normal[0] + (fc[1] - oc[1]) * o->normal[1] +
+                                           (fc[2] - oc[2]) * o->normal[2];
+                        known = dn > 1.0 - 1e-9 && fabs(sep) <= 1e-9 * radius;
+                    }
+                    if (known) continue;
+                    if (*n_planes >= CDC_MAX_WALL_FACETS)
+                        return cdc_fail(ctx, CDC_ERR_UNSUPPORTED,
+                                        "wallMirror: more than %d distinct wall-face planes within %g m of (%g %g %g) "
+                                        "(a wall more finely faceted than the kernel can mirror: a larger mesh cell "
+                                        "at the wall, a smaller kernel, or wallMirror false)",
+                                        CDC_MAX_WALL_FACETS, radius, x[0], x[1], x[2]);
+                    cdc_plane *p = planes + (*n_planes)++;
+                    for (int d = 0; d < 3; ++d) {
+                        p->origin[d] = fc[d];
+                        p->normal[d] = fc[3 + d];
+                    }
+                }
+            }
+    return CDC_OK;
+}
