@@ -45,14 +45,17 @@ for h in ("15", "16.4", "20", "25", "31.2", "35"):
               f"{undefined} without solid)")
         status |= not ok
 # depth-averaged profiles (every cell column across the thickness, particles binned by the cell of
-# their centre): one point per cell across the width at every height
+# their centre): one point per cell across the width at every height. The binned gas fraction is at
+# most 1 but may be below 0 over a window this short where the cells are smaller than the particles
+# (a cell holding a centre holds the whole particle: 1.7 times its volume at dx/d = 0.67); its time
+# average tends to the solid fraction as the window grows.
 for h in ("15", "16.4", "20", "25", "31.2", "35"):
     gas = profile("voidfractiondepthbinned", h)
     for q in ("voidfractiondepthbinned", "vzdepthbinned", "voidfractiondepth"):
         vals = profile(q, h)
         ok = len(vals) == ny and len(gas) == ny and all(
             math.isfinite(v) or (v != v and q == "vzdepthbinned" and g > 0.5) for v, g in zip(vals, gas)) and \
-            all(0 <= g <= 1 for g in gas)
+            all(g <= 1 + 1e-12 for g in gas)
         print(("PASS" if ok else "FAIL") + f": {tag} profile {q} z = {h} mm ({len(vals)} points of {ny})")
         status |= not ok
 log = open(os.path.join(run, "log.coarseDemFoam")).read()
