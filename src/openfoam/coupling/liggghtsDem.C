@@ -22,6 +22,7 @@ namespace
 {
 std::string demLogFile;
 bool inDemCall = false;
+int demRank = 0;   // LIGGGHTS' Error::all stops every rank: the first says so
 
 struct demCall
 {
@@ -45,7 +46,7 @@ const char* demErrorHint(const std::string& msg)
 
 void reportDemExit()
 {
-    if (!inDemCall) return;
+    if (!inDemCall || demRank != 0) return;
     std::ifstream log(demLogFile);
     std::string line, last;
     while (std::getline(log, line))
@@ -91,6 +92,7 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
 
     const std::string logFile = (caseDir/"log.liggghts");
     demLogFile = logFile;
+    MPI_Comm_rank(MPI_COMM_WORLD, &demRank);
     std::atexit(reportDemExit);
     // A restarted run continues the DEM from <startTime>/dem.restart: the script gets
     // ${restarting} (1 or 0) and ${restart} (the file, or "none") and chooses what to read, e.g.
