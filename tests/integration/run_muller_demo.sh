@@ -102,3 +102,24 @@ print(("PASS" if ok else "FAIL") + f": {tag}: compared with {len(want)} MR data 
 status |= not ok
 sys.exit(status)
 PYEOF
+py=$?
+# -continue: with the case files the run started with it continues (here: at its end already, so it
+# only re-makes the profiles); with a file of the run changed it refuses, naming the file
+tag="Muller demo $name"
+run_dir="$case_dir/runs/$name"
+if "$case_dir/Allrun" -mode demo -model "$model" -mesh "$mesh" -U "$U" -continue > "$log.continue" 2>&1 &&
+   grep -q "continuing runs/$name" "$log.continue"; then
+    echo "PASS: $tag: -continue with the same case files continues"
+else
+    echo "FAIL: $tag: -continue with the same case files did not continue (see $log.continue)"; py=1
+fi
+cp "$run_dir/constant/couplingProperties" "$log.cp"
+echo "// edited" >> "$run_dir/constant/couplingProperties"
+if ! "$case_dir/Allrun" -mode demo -model "$model" -mesh "$mesh" -U "$U" -continue > "$log.refused" 2>&1 &&
+   grep -q "constant/couplingProperties" "$log.refused" && grep -q "cannot continue" "$log.refused"; then
+    echo "PASS: $tag: -continue with a changed case file refuses, naming constant/couplingProperties"
+else
+    echo "FAIL: $tag: -continue with a changed case file did not refuse naming it (see $log.refused)"; py=1
+fi
+cp "$log.cp" "$run_dir/constant/couplingProperties"
+exit $py
