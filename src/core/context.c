@@ -229,7 +229,7 @@ void cdc_context_destroy(cdc_context *ctx)
     free(ctx->cell_cells);
     free(ctx->cell_bbox);
     free(ctx->cell_is_box);
-    free(ctx->facet_data);
+    free(ctx->facets);
     free(ctx->facet_offsets);
     free(ctx->facet_items);
     free(ctx->bin_offsets);

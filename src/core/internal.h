@@ -38,6 +38,15 @@ void cdc_dvec_free(cdc_dvec *a);
 
 /* A wall plane near a particle: points x with dot(x - origin, normal) = 0; normal points out. */
 typedef struct { double origin[3]; double normal[3]; } cdc_plane;
+/* A wall face for mirroring: its plane and the centre of the cell that owns it (wall_facets.c). */
+typedef struct { cdc_plane plane; double owner[3]; } cdc_facet;
+
+/* Signed distance of x from the plane, positive on the side its normal points to (outside). */
+static inline double cdc_plane_offset(const cdc_plane *p, const double x[3])
+{
+    return (x[0] - p->origin[0]) * p->normal[0] + (x[1] - p->origin[1]) * p->normal[1] +
+           (x[2] - p->origin[2]) * p->normal[2];
+}
 #define CDC_MAX_WALL_FACETS 64 /* distinct wall-face planes within a kernel's reach (a faceted curved
                                   * wall gives one per facet); more is an error */
 #define CDC_MAX_PLANES 6   /* mirror planes kept from those facets: at most the walls of a box */
@@ -67,10 +76,9 @@ struct cdc_context {
     double mesh_lo[3], mesh_hi[3];
     double total_volume;
 
-    /* wall facets for mirroring (wall_facets.c): per facet origin, unit normal, owner cell centre;
-     * binned by owner centre */
+    /* wall facets for mirroring (wall_facets.c), binned by owner centre */
     int32_t n_facets;
-    double *facet_data;
+    cdc_facet *facets;
     double facet_lo[3], facet_bin;
     int32_t facet_nbin[3];
     int32_t *facet_offsets, *facet_items;

@@ -27,13 +27,6 @@ static inline int accepts(const cdc_context *ctx, enum accept_kind kind, int32_t
     return d2 < radius * radius;
 }
 
-/* Signed distance of x from the plane, positive on the side its normal points to (outside). */
-static double plane_offset(const cdc_plane *p, const double x[3])
-{
-    return (x[0] - p->origin[0]) * p->normal[0] + (x[1] - p->origin[1]) * p->normal[1] +
-           (x[2] - p->origin[2]) * p->normal[2];
-}
-
 /* Breadth-first over the face neighbours: the cells accepted form the neighbourhood; the search
  * expands from them and from the start cell (which may itself lie outside, seed_only). A cell is
  * tested when first seen and queued only if accepted, so the rejected rim costs one test each. */
@@ -85,7 +78,7 @@ static int nearer(const cdc_plane *a, double da, const cdc_plane *b, double db)
 int cdc_nearest_wall_planes(const double x[3], cdc_plane *planes, int n_planes)
 {
     double dist[CDC_MAX_WALL_FACETS];
-    for (int k = 0; k < n_planes; ++k) dist[k] = -plane_offset(planes + k, x);
+    for (int k = 0; k < n_planes; ++k) dist[k] = -cdc_plane_offset(planes + k, x);
     /* insertion sort: a few dozen facets at most */
     for (int k = 1; k < n_planes; ++k) {
         const cdc_plane p = planes[k];
@@ -114,7 +107,7 @@ int cdc_nearest_wall_planes(const double x[3], cdc_plane *planes, int n_planes)
 
 static void reflect(const double x[3], const cdc_plane *p, double out[3])
 {
-    const double s = plane_offset(p, x);
+    const double s = cdc_plane_offset(p, x);
     for (int d = 0; d < 3; ++d) out[d] = x[d] - 2.0 * s * p->normal[d];
 }
 
@@ -129,7 +122,7 @@ int cdc_mirror_images(const double x[3], const cdc_plane *planes, int n_planes, 
             double y[3];
             reflect(images[head], planes + k, y);
             double beyond = 0.0; /* how far y lies outside the domain side of the planes */
-            for (int q = 0; q < n_planes; ++q) beyond = fmax(beyond, plane_offset(planes + q, y));
+            for (int q = 0; q < n_planes; ++q) beyond = fmax(beyond, cdc_plane_offset(planes + q, y));
             if (beyond >= reach) continue;
             int known = 0;
             for (int m = 0; m < n && !known; ++m) known = cdc_dist2(y, images[m]) <= same2;

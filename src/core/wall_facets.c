@@ -34,30 +34,30 @@ static size_t bin_index(const cdc_context *ctx, int32_t i, int32_t j, int32_t k)
 static cdc_status store_facets(cdc_context *ctx, int32_t n, const double *centres, const double *areas,
                                const double *owners)
 {
-    free(ctx->facet_data);
+    free(ctx->facets);
     free(ctx->facet_offsets);
     free(ctx->facet_items);
-    ctx->facet_data = NULL;
+    ctx->facets = NULL;
     ctx->facet_offsets = ctx->facet_items = NULL;
     ctx->n_facets = 0;
     if (n <= 0) return CDC_OK;
 
-    ctx->facet_data = malloc(9 * (size_t)n * sizeof(double));
-    if (!ctx->facet_data) return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
+    ctx->facets = malloc((size_t)n * sizeof *ctx->facets);
+    if (!ctx->facets) return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, gap = 0.0;
     for (int32_t f = 0; f < n; ++f) {
-        double *q = ctx->facet_data + 9 * (size_t)f; /* origin, unit normal, owner centre */
+        cdc_facet *q = ctx->facets + f;
         const double *S = areas + 3 * (size_t)f;
         const double mag = sqrt(S[0] * S[0] + S[1] * S[1] + S[2] * S[2]);
         if (!(mag > 0.0)) return cdc_fail(ctx, CDC_ERR_ARGUMENT, "wall facets: facet %d has no area", (int)f);
         for (int d = 0; d < 3; ++d) {
-            q[d] = centres[3 * (size_t)f + d];
-            q[3 + d] = S[d] / mag;
-            q[6 + d] = owners[3 * (size_t)f + d];
-            lo[d] = fmin(lo[d], q[6 + d]);
-            hi[d] = fmax(hi[d], q[6 + d]);
+            q->plane.origin[d] = centres[3 * (size_t)f + d];
+            q->plane.normal[d] = S[d] / mag;
+            q->owner[d] = owners[3 * (size_t)f + d];
+            lo[d] = fmin(lo[d], q->owner[d]);
+            hi[d] = fmax(hi[d], q->owner[d]);
         }
-        gap += sqrt(cdc_dist2(q, q + 6));
+        gap += sqrt(cdc_dist2(q->plane.origin, q->owner));
     }
     ctx->n_facets = n;
     /* bins of about two wall cells (the owner is half a cell from its face), fewer if that would
@@ -81,7 +81,7 @@ static cdc_status store_facets(cdc_context *ctx, int32_t n, const double *centre
     size_t *bin = malloc((size_t)n * sizeof *bin);
     if (!bin) return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
     for (int32_t f = 0; f < n; ++f) {
-        const double *o = ctx->facet_data + 9 * (size_t)f + 6;
+        const double *o = ctx->facets[f].owner;
         bin[f] = bin_index(ctx, bin_of(ctx, 0, o[0]), bin_of(ctx, 1, o[1]), bin_of(ctx, 2, o[2]));
         ++ctx->facet_offsets[bin[f] + 1];
     }
@@ -124,12 +124,6 @@ cdc_status cdc_context_set_wall_facets(cdc_context *ctx, int32_t n, const double
     return store_facets(ctx, n, centres, areas, owner_centres);
 }
 
-/* Signed distance of x from the plane, positive on the side its normal points to (outside). */
-static double offset(const double *plane, const double x[3])
-{
-    return (x[0] - plane[0]) * plane[3] + (x[1] - plane[1]) * plane[4] + (x[2] - plane[2]) * plane[5];
-}
-
 cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radius, cdc_plane *planes,
                                 int *n_planes)
 {
@@ -146,16 +140,14 @@ cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radi
             for (int32_t i = b0[0]; i <= b1[0]; ++i) {
                 const size_t b = bin_index(ctx, i, j, k);
                 for (int32_t q = ctx->facet_offsets[b]; q < ctx->facet_offsets[b + 1]; ++q) {
-                    const double *fc = ctx->facet_data + 9 * (size_t)ctx->facet_items[q];
-                    if (cdc_dist2(fc + 6, x) > r2 || -offset(fc, x) >= radius) continue;
+                    const cdc_facet *fc = ctx->facets + ctx->facet_items[q];
+                    if (cdc_dist2(fc->owner, x) > r2 || -cdc_plane_offset(&fc->plane, x) >= radius) continue;
                     int known = 0; /* the same plane as one already taken (a flat wall's faces) */
                     for (int p = 0; p < *n_planes && !known; ++p) {
                         const cdc_plane *o = planes + p;
-                        const double dn = fc[3] * o->normal[0] + fc[4] * o->normal[1] + fc[5] * o->normal[2];
-                        const double *oc = o->origin;
-                        const double sep = (fc[0] - oc[0]) * o->normal[0] + (fc[1] - oc[1]) * o->normal[1] +
-                                           (fc[2] - oc[2]) * o->normal[2];
-                        known = dn > 1.0 - 1e-9 && fabs(sep) <= 1e-9 * radius;
+                        const double dn = fc->plane.normal[0] * o->normal[0] + fc->plane.normal[1] * o->normal[1] +
+                                          fc->plane.normal[2] * o->normal[2];
+                        known = dn > 1.0 - 1e-9 && fabs(cdc_plane_offset(o, fc->plane.origin)) <= 1e-9 * radius;
                     }
                     if (known) continue;
                     if (*n_planes >= CDC_MAX_WALL_FACETS)
@@ -164,11 +156,7 @@ cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radi
                                         "(a wall more finely faceted than the kernel can mirror: a larger mesh cell "
                                         "at the wall, a smaller kernel, or wallMirror false)",
                                         CDC_MAX_WALL_FACETS, radius, x[0], x[1], x[2]);
-                    cdc_plane *p = planes + (*n_planes)++;
-                    for (int d = 0; d < 3; ++d) {
-                        p->origin[d] = fc[d];
-                        p->normal[d] = fc[3 + d];
-                    }
+                    planes[(*n_planes)++] = fc->plane;
                 }
             }
     return CDC_OK;
