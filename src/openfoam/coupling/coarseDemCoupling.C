@@ -319,6 +319,13 @@ void coarseDemCoupling::sampleFluid
     }
 }
 
+cdc_particles coarseDemCoupling::coreParticles() const
+{
+    static_assert(sizeof(long long) == sizeof(int64_t), "DEM ids are 64 bit");
+    return {int32_t(particles_.size()), particles_.x.data(), particles_.radius.data(),
+            reinterpret_cast<const int64_t*>(particles_.id.data()), nullptr};
+}
+
 void coarseDemCoupling::gather(const cdc_kernels* k, const double* field, int ncomp, double* out)
 {
     const label n = particles_.size(), ng = ghosts_.size();
@@ -377,9 +384,7 @@ void coarseDemCoupling::couple
     checkParticleCount();
 
     // particles for the core; NaN positions and bad radii are caught there (named by id)
-    static_assert(sizeof(long long) == sizeof(int64_t), "DEM ids are 64 bit");
-    cdc_particles cp = {int32_t(n), particles_.x.data(), particles_.radius.data(),
-                        reinterpret_cast<const int64_t*>(particles_.id.data()), nullptr};
+    const cdc_particles cp = coreParticles();
 
     // ghosts: copies of the neighbours' particles whose kernels reach into this rank's cells
     timers_.start(stageTimers::exchange);
@@ -753,8 +758,7 @@ void coarseDemCoupling::report(Ostream& os) const
 
     // particles reaching through the mesh boundary: a DEM wall's contact overlap (small depths), or a
     // particle leaving the mesh (large ones); counted here, at reports only (six locations each)
-    const cdc_particles cp = {int32_t(particles_.size()), particles_.x.data(), particles_.radius.data(),
-                              reinterpret_cast<const int64_t*>(particles_.id.data()), nullptr};
+    const cdc_particles cp = coreParticles();
     int32_t nOut = 0;
     double depth = 0;
     int64_t id = -1;

@@ -8,14 +8,15 @@
 namespace Foam
 {
 
-// The <method>Props entries, each with the parameter bit of the core's methods that reads it.
-static const struct { const char* key; unsigned bit; } kernelKeys[] =
+// The numeric <method>Props entries: the member of cdc_kernel_params each sets and the parameter bit
+// of the core's methods that reads it (0 when absent: the method's own default). wallMirror, the
+// one switch, follows them.
+static const struct { const char* key; double cdc_kernel_params::*member; unsigned bit; } kernelKeys[] =
 {
-    {"expansionFactor", CDC_PARAM_EXPANSION_FACTOR},
-    {"searchFactor", CDC_PARAM_SEARCH_FACTOR},
-    {"bandwidth", CDC_PARAM_BANDWIDTH},
-    {"cutoffFactor", CDC_PARAM_CUTOFF_FACTOR},
-    {"wallMirror", CDC_PARAM_WALL_MIRROR},
+    {"expansionFactor", &cdc_kernel_params::expansion_factor, CDC_PARAM_EXPANSION_FACTOR},
+    {"searchFactor", &cdc_kernel_params::search_factor, CDC_PARAM_SEARCH_FACTOR},
+    {"bandwidth", &cdc_kernel_params::bandwidth, CDC_PARAM_BANDWIDTH},
+    {"cutoffFactor", &cdc_kernel_params::cutoff_factor, CDC_PARAM_CUTOFF_FACTOR},
 };
 
 cdc_kernel_params readKernelParams(const dictionary& dict, const word& name, const word& method)
@@ -25,22 +26,20 @@ cdc_kernel_params readKernelParams(const dictionary& dict, const word& name, con
     const unsigned reads = cdc_method_params(method.c_str());
     wordList valid;
     for (const auto& k : kernelKeys) if (reads & k.bit) valid.append(k.key);
+    if (reads & CDC_PARAM_WALL_MIRROR) valid.append("wallMirror");
     if (dict.isDict(name + "Props")) checkPropsKeys(props, valid);
-    prm.expansion_factor = props.lookupOrDefault<scalar>("expansionFactor", 0);
-    prm.search_factor = props.lookupOrDefault<scalar>("searchFactor", 0);
-    prm.bandwidth = props.lookupOrDefault<scalar>("bandwidth", 0);
-    prm.cutoff_factor = props.lookupOrDefault<scalar>("cutoffFactor", 0);
-    prm.wall_mirror = props.lookupOrDefault<Switch>("wallMirror", false) ? 1 : 0;
-    // what the method runs with, so that a user sees a default taken (0: the method's own default)
-    const scalar values[] = {prm.expansion_factor, prm.search_factor, prm.bandwidth, prm.cutoff_factor};
+    // read, and say what the method runs with, so that a user sees a default taken
     Info<< (name == method ? word("voidFractionModel") : name) << " " << method << ":";
-    for (size_t i = 0; i < sizeof kernelKeys/sizeof kernelKeys[0]; ++i)
+    for (const auto& k : kernelKeys)
     {
-        if (!(reads & kernelKeys[i].bit)) continue;
-        Info<< " " << kernelKeys[i].key << " ";
-        if (kernelKeys[i].bit == CDC_PARAM_WALL_MIRROR) Info<< (prm.wall_mirror ? "true" : "false");
-        else Info<< values[i];
-        if (!props.found(kernelKeys[i].key)) Info<< " (default)";
+        prm.*k.member = props.lookupOrDefault<scalar>(k.key, 0);
+        if (!(reads & k.bit)) continue;
+        Info<< " " << k.key << " " << prm.*k.member << (props.found(k.key) ? "" : " (default)");
+    }
+    prm.wall_mirror = props.lookupOrDefault<Switch>("wallMirror", false) ? 1 : 0;
+    if (reads & CDC_PARAM_WALL_MIRROR)
+    {
+        Info<< " wallMirror " << (prm.wall_mirror ? "true" : "false") << (props.found("wallMirror") ? "" : " (default)");
     }
     Info<< endl;
     if (name == "gaussian" && !props.found("bandwidth"))
