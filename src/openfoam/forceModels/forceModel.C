@@ -1,6 +1,8 @@
 #include "forceModel.H"
 #include "error.H"
 #include "propsKeys.H"
+#include "Pstream.H"
+#include "OStringStream.H"
 
 namespace Foam
 {
@@ -41,4 +43,25 @@ void Foam::forceModel::dragCoefficient(const particleFluidState&, const fluidPro
 void Foam::forceModel::addForce(const particleFluidState&, const fluidProperties&, vectorField&) const
 {
     FatalErrorInFunction << name_ << " is a drag model" << abort(FatalError);
+}
+
+void Foam::forceModel::warnOutOfRange
+(
+    const word& key, const string& quantity, scalar value, const string& range
+) const
+{
+    if (!warned_.insert(key)) return;
+    OStringStream msg;
+    msg << name_ << ": " << quantity.c_str() << " = " << value << " is outside the range of the law, "
+        << range.c_str() << nl
+        << "    the law is applied as written; reported once per run";
+    if (Pstream::master())
+    {
+        WarningInFunction << msg.str().c_str() << endl;
+    }
+    else
+    {
+        // OpenFOAM's Warning prints on the master only; another rank reports through Pout
+        Pout<< "--> FOAM Warning : " << msg.str().c_str() << endl;
+    }
 }
