@@ -55,6 +55,7 @@ coarseDemCoupling::coarseDemCoupling
     demRestart_(dict_.lookupOrDefault<Switch>("demRestart", true)),
     allowParticleLoss_(dict_.lookupOrDefault<Switch>("allowParticleLoss", false)),
     cgFactor_(dict_.lookupOrDefault<scalar>("coarseGrainingFactor", 1)),
+    alphaRelaxationTime_(dict_.lookupOrDefault<scalar>("alphaRelaxationTime", 0)),
     fluid_{rho.value(), nu.value(), g.value()},
     demMesh_(mesh, dict_),
     voidFraction_(dict_, demMesh_),
@@ -116,6 +117,12 @@ coarseDemCoupling::coarseDemCoupling
         FatalIOErrorInFunction(dict_)
             << "entry couplingInterval " << couplingInterval_ << " in " << dict_.name()
             << " is invalid: must be a positive number of DEM steps" << exit(FatalIOError);
+    }
+    if (!(alphaRelaxationTime_ >= 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "entry alphaRelaxationTime " << alphaRelaxationTime_ << " in " << dict_.name()
+            << " is invalid: must be >= 0 (s; 0: alpha = 1 - alpha_p at every step)" << exit(FatalIOError);
     }
     if (!(cgFactor_ >= 1))
     {
@@ -235,7 +242,12 @@ coarseDemCoupling::coarseDemCoupling
         << (backgroundKernels_ ? "bigParticle kernel" : "void-fraction kernels")
         << ", drag on the fluid " << (implicitDrag_ ? "implicit" : "explicit") << ", on the particles "
         << (implicitParticleDrag_ ? "every DEM step" : "held for the CFD step") << ", forces " << names
-        << ", DEM step " << dem_->timestep() << " s x " << couplingInterval_ << endl;
+        << ", DEM step " << dem_->timestep() << " s x " << couplingInterval_;
+    if (alphaRelaxationTime_ > 0)
+    {
+        Info<< ", fluid fraction relaxed over " << alphaRelaxationTime_ << " s (alphaRelaxationTime)";
+    }
+    Info<< endl;
 }
 
 coarseDemCoupling::~coarseDemCoupling()
@@ -408,8 +420,7 @@ void coarseDemCoupling::couple
     timers_.add(stageTimers::kernel, tKernel);
     timers_.add(stageTimers::smoothing, voidFraction_.smoothingSeconds());
     alphaP.correctBoundaryConditions();
-    alpha.primitiveFieldRef() = 1 - alphaP.primitiveField();
-    alpha.correctBoundaryConditions();
+    setFluidFraction(alpha);
     if (backgroundKernels_)
     {
         timers_.start(stageTimers::kernel);
@@ -648,6 +659,40 @@ void coarseDemCoupling::particleAccelerations()
     previousVelocity_.transfer(current);
 }
 
+// alpha = 1 - alpha_p; with alphaRelaxationTime tau > 0 the fluid fraction follows the particles' with
+// the time constant tau: alpha(n+1) = alpha(n) + w (1 - alpha_p - alpha(n)), w = min(1, dt/tau).
+// Why: a kernel whose cells enter or leave as its particle moves (centre, divided, bigParticle, a
+// truncated gaussian) changes alpha_p by a jump within one CFD step, whatever the step. The fluid has to
+// displace that volume within the step; the pressure pulse this takes grows as 1/dt and reaches the
+// particles through -V grad(p), so the CFD-step refinement of a fluidized bed does not converge
+// (tests/stability/README.md, refinement study). With tau fixed, d(alpha)/dt stays bounded as the step
+// shrinks; steps >= tau are unchanged (w = 1). A convex combination of two fields that each hold the
+// particles' volume holds it too, and stays within [alphaMin, 1].
+void coarseDemCoupling::setFluidFraction(volScalarField& alpha)
+{
+    scalarField& a = alpha.primitiveFieldRef();   // first: stores the old-time alpha at a new time step
+    const scalarField& ap = alphaP.primitiveField();
+    scalar w = 1;
+    if (alphaRelaxationTime_ > 0)
+    {
+        // a run's first coupling: the particles' alpha at a fresh start, at a restart the alpha read
+        // from the restart time (the uninterrupted run's, which already lags the particles')
+        w = nCouplings_ > 1
+          ? min(scalar(1), mesh_.time().deltaTValue()/alphaRelaxationTime_)
+          : (dem_->restarted() ? 0 : 1);
+    }
+    if (w >= 1)
+    {
+        a = 1 - ap;
+    }
+    else if (w > 0)
+    {
+        a = (1 - w)*alpha.oldTime().primitiveField() + w*(1 - ap);
+    }
+    alpha.correctBoundaryConditions();
+    if (alphaRelaxationTime_ > 0) solidVolumeAlpha_ = gSum((1 - a)*mesh_.V());
+}
+
 void coarseDemCoupling::checkParticleCount()
 {
     // LIGGGHTS deletes particles that leave its box (boundary f) and may only say so at its next
@@ -738,6 +783,12 @@ void coarseDemCoupling::report(Ostream& os) const
         << ", limiter moved " << returnReduce(voidFraction_.movedVolume(), sumOp<scalar>()) << " m3 in "
         << returnReduce(voidFraction_.nLimitedCells(), sumOp<label>()) << " cells"
         << ", drag dt K/m max " << particleDragRatio_ << " (" << nParticlesBeyond_ << " particles > 1)";
+    if (alphaRelaxationTime_ > 0)
+    {
+        os  << ", alpha relaxed over " << alphaRelaxationTime_ << " s: solid volume 1 - alpha "
+            << solidVolumeAlpha_ << " (rel. err " << (solidVolumeParticles_ > 0
+               ? mag(solidVolumeAlpha_ - solidVolumeParticles_)/solidVolumeParticles_ : 0) << ")";
+    }
     if (needs_ & forceModel::needDvDt)
     {
         // particles without a velocity of the last coupling (at the start or restart: all; later:
