@@ -90,6 +90,7 @@ check alphaMin_1.5 's/^alphaMin .*/alphaMin 1.5;/' "entry alphaMin 1.5"
 check alphaMin_0 's/^alphaMin .*/alphaMin 0;/' "must be in (0, 1)"
 check couplingInterval_0 's/^couplingInterval .*/couplingInterval 0;/' "entry couplingInterval 0"
 check couplingInterval_neg 's/^couplingInterval .*/couplingInterval -5;/' "must be a positive number of DEM steps"
+check alphaRelaxationTime_neg '$a alphaRelaxationTime -1e-4;' "entry alphaRelaxationTime -0.0001 in"
 check modelType_C 's/^modelType .*/modelType C;/' "valid model types: A"
 check difelice_reynolds 's/GidaspowDrag/DiFeliceDrag/; $a DiFeliceDragProps { reynoldsNumber interstitial; }' \
     "entry reynoldsNumber interstitial in"
