@@ -1,0 +1,43 @@
+#!/usr/bin/python3
+"""initialParticles.py -- the start state of liquidFluidizedBed: 1146 spheres of d = 1 mm at random,
+non-overlapping positions (random sequential addition, fixed seed), as LIGGGHTS commands.
+
+    initialParticles.py > DEM/particles.in
+
+The centres are drawn uniformly in the box 0.5 < x, y < 9.5 mm, 0.5 < z < 21.5 mm (no particle
+touches a wall) and a draw closer than 1.02 d to a placed centre is rejected. The particles fill
+22 mm: solid fraction 600 mm3 / (100 mm2 x 22 mm) = 0.273 (voidage 0.727), a suspension looser
+than every bed of the tutorial (equilibrium voidage 0.50-0.59), so every run settles onto its
+equilibrium from above, as a sediment builds a fluidized bed from below. A lattice start was tried
+first and kept its layers: its planes of 9 x 9 particles settled as plates with water gaps between
+them and did not mix in 1 s (README). The same file serves every run (fixed seed).
+"""
+import random
+
+N, D, RHO_P = 1146, 1e-3, 2000.0
+LO, HI_XY, HI_Z, GAP = 0.5e-3, 9.5e-3, 21.5e-3, 1.02 * 1e-3
+rng = random.Random(20231130)
+cell = GAP                                    # cell list of edge >= the rejection distance
+grid = {}
+sites = []
+while len(sites) < N:
+    p = (rng.uniform(LO, HI_XY), rng.uniform(LO, HI_XY), rng.uniform(LO, HI_Z))
+    key = tuple(int(c // cell) for c in p)
+    ok = True
+    for i in (-1, 0, 1):
+        for j in (-1, 0, 1):
+            for k in (-1, 0, 1):
+                for q in grid.get((key[0] + i, key[1] + j, key[2] + k), ()):
+                    if sum((a - b) ** 2 for a, b in zip(p, q)) < GAP * GAP:
+                        ok = False
+                        break
+                if not ok: break
+            if not ok: break
+        if not ok: break
+    if ok:
+        grid.setdefault(key, []).append(p)
+        sites.append(p)
+print("# %d spheres, d = %g m, %g kg/m3: random sequential addition (initialParticles.py)" % (N, D, RHO_P))
+for x, y, z in sites:
+    print("create_atoms 1 single %.9g %.9g %.9g units box" % (x, y, z))
+print("set group all diameter %g density %g" % (D, RHO_P))

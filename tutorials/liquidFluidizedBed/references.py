@@ -1,0 +1,117 @@
+#!/usr/bin/python3
+"""references.py -- the reference numbers of liquidFluidizedBed, computed (no tabulated values).
+
+    references.py [U ...]      prints them (default U = 0.015 0.020 0.025 m/s) and writes
+                               results/references.csv
+
+Case (Zhang et al., Phys. Fluids 35, 113330 (2023) §V.C and Table III, big species; Khan et al.
+2016): N = 1146 spheres, d = 1 mm, rho_p = 2000 kg/m3, water rho_f = 1000 kg/m3, nu = 1e-6 m2/s,
+g = 9.81 m/s2, tube cross-section A = 10 x 10 mm.
+
+1. eps_drag_equilibrium(U): the homogeneous-bed equilibrium of the code's Di Felice law
+   (src/openfoam/forceModels/DiFeliceDrag.C, Di Felice, Int. J. Multiphase Flow 20, 153 (1994);
+   Zhang et al. eqs. A4-A7). The code's drag on a particle is
+       f = K u_r,  K = pi/8 rho_f d^2 alpha^(2-chi) (0.63 sqrt|u_r| + 4.8 sqrt(nu/(alpha d)))^2
+   i.e. f = pi/8 Cd(Re) rho_f d^2 alpha^(2-chi) |u_r| u_r with Cd = (0.63 + 4.8/sqrt(Re))^2,
+   chi = 3.7 - 0.65 exp(-(1.5 - log10 Re)^2/2) and Re = alpha |u_r| d/nu (the default
+   reynoldsNumber superficial). In a homogeneous bed at rest, alpha = eps and the interstitial slip
+   is u_r = U/eps, so Re = U d/nu and f = pi/8 Cd rho_f d^2 U^2 eps^(-chi).
+   Model A (the particle gets drag + gradPForce -V grad p; the fluid -eps grad p + eps rho_f g -
+   n f = 0 with n V = 1 - eps): f (1 + (1 - eps)/eps) = (rho_p - rho_f) V g, so
+       f = eps (rho_p - rho_f) g pi d^3/6  <=>  (3/4) Cd rho_f U^2 eps^(-chi) / d = eps (rho_p - rho_f) g
+   Model B without gradPForce (drag / eps, plus Archimedes rho_f V g): f/eps = (rho_p - rho_f) V g,
+   the same equation. Solved for eps by bisection on (0.2, 1).
+2. eps_richardson_zaki(U): Richardson & Zaki (Trans. Instn Chem. Engrs 32, 35 (1954)),
+   eps = (U/u_t)^(1/n), with
+   - the terminal velocity of Khan & Richardson (Chem. Eng. Commun. 62, 135 (1987); the seed's
+     formula, which it attributes to Ganguly 1990): Re_t = (2.33 Ar^0.018 - 1.53 Ar^-0.016)^13.3,
+     Ar = (rho_p/rho_f - 1) g d^3/nu^2, u_t = Re_t nu/d;
+   - the exponent of Garside & Al-Dibouni (Ind. Eng. Chem. Process Des. Dev. 16, 206 (1977)):
+     (5.1 - n)/(n - 2.7) = 0.1 Re_t^0.9.
+   No wall correction (the CFD-DEM has none either).
+3. dp_weight: the buoyant weight of the bed per area, (rho_p - rho_f) g V_s / A with
+   V_s = N pi d^3/6: the frictional pressure drop of a fully fluidized bed (momentum balance of
+   the whole column, no correlation).
+4. H(eps) = V_s / (A (1 - eps)): the height of a homogeneous bed of voidage eps.
+"""
+import math, os, sys
+
+N, D, RHO_P, RHO_F, NU, G = 1146, 1e-3, 2000.0, 1000.0, 1e-6, 9.81
+A = 0.010 * 0.010
+VS = N * math.pi / 6 * D ** 3
+
+
+def difelice_cd_chi(re):
+    """Cd and chi of DiFeliceDrag.C for the particle Reynolds number re."""
+    cd = (0.63 + 4.8 / math.sqrt(re)) ** 2
+    chi = 3.7 - 0.65 * math.exp(-(1.5 - math.log10(re)) ** 2 / 2)
+    return cd, chi
+
+
+def eps_drag_equilibrium(U):
+    """Voidage where the code's Di Felice drag on a particle at rest equals eps (rho_p - rho_f) V g."""
+    re = U * D / NU                       # = alpha |u_r| d/nu with u_r = U/eps (superficial Re)
+    cd, chi = difelice_cd_chi(re)
+
+    def residual(eps):                    # drag per particle / (eps x buoyant weight) - 1
+        drag = math.pi / 8 * cd * RHO_F * D ** 2 * U ** 2 * eps ** (-chi)
+        return drag / (eps * (RHO_P - RHO_F) * G * math.pi / 6 * D ** 3) - 1
+
+    lo, hi = 0.2, 1.0                     # residual(lo) > 0 (too much drag), residual(hi) < 0
+    if not (residual(lo) > 0 > residual(hi)):
+        return float("nan")              # U beyond the fluidized range: no root in (0.2, 1)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if residual(mid) > 0:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def terminal_velocity():
+    """u_t (m/s) and Re_t of Khan & Richardson (1987)."""
+    ar = (RHO_P / RHO_F - 1) * G * D ** 3 / NU ** 2
+    re_t = (2.33 * ar ** 0.018 - 1.53 * ar ** -0.016) ** 13.3
+    return re_t * NU / D, re_t, ar
+
+
+def rz_exponent(re_t):
+    """n of Garside & Al-Dibouni (1977): (5.1 - n)/(n - 2.7) = 0.1 Re_t^0.9."""
+    a = 0.1 * re_t ** 0.9
+    return (5.1 + 2.7 * a) / (1 + a)
+
+
+def eps_richardson_zaki(U):
+    u_t, re_t, _ = terminal_velocity()
+    return (U / u_t) ** (1 / rz_exponent(re_t))
+
+
+def dp_weight():
+    """Buoyant weight of the bed per cross-section (Pa)."""
+    return (RHO_P - RHO_F) * G * VS / A
+
+
+def height(eps):
+    return VS / (A * (1 - eps))
+
+
+def main():
+    us = [float(u) for u in sys.argv[1:]] or [0.015, 0.020, 0.025]
+    u_t, re_t, ar = terminal_velocity()
+    print("Ar = %.1f, Re_t = %.2f, u_t = %.2f mm/s, n = %.3f (Garside-Al-Dibouni), "
+          "V_s = %.2f mm3, dp_weight = %.2f Pa" % (ar, re_t, 1e3 * u_t, rz_exponent(re_t), 1e9 * VS, dp_weight()))
+    rows = ["U,Re,eps_drag_equilibrium,eps_richardson_zaki,H_drag_equilibrium_mm,H_richardson_zaki_mm,dp_weight"]
+    for U in us:
+        ed, er = eps_drag_equilibrium(U), eps_richardson_zaki(U)
+        print("U = %.3f m/s (Re = %.0f): eps drag equilibrium %.3f (H %.2f mm), Richardson-Zaki %.3f (H %.2f mm)"
+              % (U, U * D / NU, ed, 1e3 * height(ed), er, 1e3 * height(er)))
+        rows.append("%g,%.4g,%.5f,%.5f,%.4f,%.4f,%.4f" % (U, U * D / NU, ed, er, 1e3 * height(ed), 1e3 * height(er), dp_weight()))
+    out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results", "references.csv")
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    with open(out, "w") as f:
+        f.write("\n".join(rows) + "\n")
+
+
+if __name__ == "__main__":
+    main()

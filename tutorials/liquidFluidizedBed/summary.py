@@ -1,0 +1,124 @@
+#!/usr/bin/python3
+"""summary.py -- results/summary.csv, results/details.csv, the per-run time series and the plot of
+liquidFluidizedBed from the runs of Allrun -all.
+
+    summary.py TUTORIAL_DIR MODE
+
+Rows in the order method (centre divided bigParticle diffusion), modelType (A B), U (0.015 0.020
+0.025); a missing run is reported and left out. Prints the checks against the targets (voidage
+within 0.02 of the drag-law equilibrium, pressure drop within 2 % of the bed's weight, Model A and
+B bed heights H_c within 2 %) as MET / MISSED lines (not PASS/FAIL: the matrix is not a test).
+"""
+import csv, os, shutil, sys
+
+METHODS = ("centre", "divided", "bigParticle", "diffusion")
+MODELS = ("A", "B")
+US = ("0.015", "0.020", "0.025")
+
+
+def read_row(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return rows[0], list(rows[0].keys())
+
+
+def main():
+    here, mode = sys.argv[1], sys.argv[2]
+    res = os.path.join(here, "results")
+    os.makedirs(os.path.join(res, "runs"), exist_ok=True)
+    rows, details, missing = [], [], []
+    header = dheader = None
+    for m in METHODS:
+        for mt in MODELS:
+            for u in US:
+                name = "%s_%s_U%s_%s" % (m, mt, u, mode)
+                run = os.path.join(here, "runs", name, "results")
+                if not os.path.isfile(os.path.join(run, "result.csv")):
+                    missing.append(name)
+                    continue
+                r, header = read_row(os.path.join(run, "result.csv"))
+                d, dheader = read_row(os.path.join(run, "details.csv"))
+                rows.append(r)
+                details.append(d)
+                shutil.copy(os.path.join(run, "bedHeight.csv"), os.path.join(res, "runs", name + "_bedHeight.csv"))
+                shutil.copy(os.path.join(run, "profile.csv"), os.path.join(res, "runs", name + "_profile.csv"))
+    if not rows:
+        print("summary.py: no runs of mode %s" % mode)
+        return 1
+    suffix = "" if mode == "full" else "_" + mode
+    for fname, hdr, rr in (("summary%s.csv" % suffix, header, rows), ("details%s.csv" % suffix, dheader, details)):
+        with open(os.path.join(res, fname), "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=hdr, lineterminator="\n")
+            w.writeheader()
+            w.writerows(rr)
+    for name in missing:
+        print("summary.py: run %s missing" % name)
+
+    # a markdown table for the README: the summary row and the details that explain it
+    dk = {(d["method"], d["modelType"], d["U"]): d for d in details}
+    with open(os.path.join(res, "table%s.md" % suffix), "w") as f:
+        f.write("| method | model | U (m/s) | eps_sim ± sem | drag eq. | R-Z | eps - eq. | eps_plateau | H_c (mm) "
+                "| dp_sim (Pa) ± sem | dp_rel_err | distributor (Pa) | dp + distributor | v_rms (mm/s) | max overlap (% d) | wall (s) |\n")
+        f.write("|" + "---|" * 16 + "\n")
+        for r in rows:
+            d = dk[(r["method"], r["modelType"], r["U"])]
+            f.write("| %s | %s | %s | %s ± %s | %s | %s | %+.3f | %s | %.2f | %.2f ± %.2f | %+.1f %% | %.2f | %+.1f %% | %.1f | %.2f | %.0f |\n" % (
+                r["method"], r["modelType"], r["U"], r["eps_sim"], r["eps_sem"], r["eps_drag_equilibrium"],
+                r["eps_richardson_zaki"], float(r["eps_sim"]) - float(r["eps_drag_equilibrium"]), d["eps_plateau"],
+                float(d["H_c_mm"]), float(r["dp_sim"]), float(d["dp_sem"]), 100 * float(r["dp_rel_err"]),
+                float(d["support_bottom_Pa"]),
+                100 * ((float(r["dp_sim"]) + float(d["support_bottom_Pa"])) / float(r["dp_weight"]) - 1),
+                float(d["v_rms_mm_s"]), float(d["max_overlap_pct_d"]), float(r["wall_s"])))
+
+    # targets
+    hc = {(d["method"], d["modelType"], d["U"]): float(d["H_c_mm"]) for d in details}
+    for r in rows:
+        de = float(r["eps_sim"]) - float(r["eps_drag_equilibrium"])
+        dp = float(r["dp_rel_err"])
+        print("%-6s %s %s U %s: eps %s (drag eq. %s, %+.4f), dp %s Pa (%+.2f %%)" % (
+            "MET" if abs(de) <= 0.02 and abs(dp) <= 0.02 else "MISSED", r["method"], r["modelType"], r["U"],
+            r["eps_sim"], r["eps_drag_equilibrium"], de, r["dp_sim"], 100 * dp))
+    for m in METHODS:
+        for u in US:
+            k = "%.3f" % float(u)
+            a, b = hc.get((m, "A", k)), hc.get((m, "B", k))
+            if a and b:
+                rel = (b - a) / a
+                print("%-6s %s U %s: H_c Model A %.2f mm, Model B %.2f mm (%+.2f %%)" % (
+                    "MET" if abs(rel) <= 0.02 else "MISSED", m, k, a, b, 100 * rel))
+
+    # eps against U per method, both models, with the two reference lines
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("summary.py: matplotlib not available, no plot")
+        return 0
+    sys.path.insert(0, here)
+    import references as ref
+    uu = [0.013 + 0.0005 * i for i in range(27)]
+    fig, ax = plt.subplots(figsize=(6.4, 4.8))
+    ax.plot(uu, [ref.eps_drag_equilibrium(u) for u in uu], "k-", label="Di Felice drag equilibrium")
+    ax.plot(uu, [ref.eps_richardson_zaki(u) for u in uu], "k--", label="Richardson-Zaki (Garside-Al-Dibouni n)")
+    marks = {"centre": "o", "divided": "s", "bigParticle": "^", "diffusion": "D"}
+    for i, m in enumerate(METHODS):
+        for mt, off, fill in (("A", -0.00045, "full"), ("B", 0.00045, "none")):
+            pts = [(float(r["U"]) + off + 0.0002 * (i - 1.5), float(r["eps_sim"]), float(r["eps_sem"]))
+                   for r in rows if r["method"] == m and r["modelType"] == mt]
+            if pts:
+                ax.errorbar([p[0] for p in pts], [p[1] for p in pts], yerr=[p[2] for p in pts],
+                            marker=marks[m], ls="none", color="C%d" % i, fillstyle=fill,
+                            label="%s, Model %s" % (m, mt))
+    ax.set_xlabel("superficial velocity U (m/s)")
+    ax.set_ylabel("bed voidage (central part of the bed)")
+    ax.set_title("liquidFluidizedBed: 1146 x 1 mm, 2000 kg/m3 in water")
+    ax.legend(fontsize=7, ncol=2)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(res, "eps_vs_U%s.png" % suffix), dpi=120)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
