@@ -195,6 +195,31 @@ cdc_status cdc_spread(const cdc_kernels *k, const double *q, int ncomp, double *
  * (w_c = V_c / sum V_c, e.g. bigParticle n = 5) this is eqs. 21-22. Particles outside get 0. */
 cdc_status cdc_gather(const cdc_kernels *k, const double *field, int ncomp, double *out);
 
+/* ------------------------------------------------------------------ momentum exchange */
+
+/* The fluid's momentum sources from the particles' forces, spread with the kernels of the last build
+ * (local particles, then ghosts, as cdc_spread), per unit fluid mass and cell volume. The fluid's
+ * momentum equation gets  -Ksl U + KslUs + f_fluid:
+ *   CDC_EXCHANGE_IMPLICIT: Ksl = spread(K / rho), KslUs = spread(K v / rho),
+ *                          f_fluid = spread(-(f + K (u_f - u_k)) / rho)   (u_k NULL: the last term is 0)
+ *   CDC_EXCHANGE_EXPLICIT: Ksl = KslUs = 0 (may be NULL), f_fluid = spread(-(K (u_f - v) + f) / rho)
+ * At a fluid velocity U whose gathered value is u_k (u_f when u_k is NULL), the fluid receives exactly
+ * minus sum_i (K_i (u_f,i - v_i) + f_i), what the particles get: Newton's third law for every method. */
+typedef enum cdc_exchange_mode { CDC_EXCHANGE_IMPLICIT = 0, CDC_EXCHANGE_EXPLICIT = 1 } cdc_exchange_mode;
+typedef struct cdc_exchange_in {
+    int32_t n;                /* particles of the last kernel build (local + ghosts) */
+    const double *K;          /* n: coefficient of the drag K (u_f - v) on each particle (kg/s) */
+    const double *v;          /* 3n: particle velocity */
+    const double *u_f;        /* 3n: the fluid velocity the drag used */
+    const double *u_k;        /* 3n or NULL: the fluid velocity gathered with these kernels, when u_f came
+                                 from other (background) kernels */
+    const double *f;          /* 3n or NULL: the particle's other forces that act back on the fluid (N) */
+    double rho;               /* fluid density (kg/m3) */
+    cdc_exchange_mode mode;
+} cdc_exchange_in;
+cdc_status cdc_exchange_sources(const cdc_kernels *k, const cdc_exchange_in *in, double *Ksl, double *KslUs,
+                                double *f_fluid);
+
 /* ------------------------------------------------------------------ field operations */
 
 /* Diffusion smoothing of a cell field (seed eq. 7): d(phi)/dtau = div(D grad phi), zero flux at every

@@ -200,4 +200,7 @@ static inline double cdc_dist2(const double a[3], const double b[3])
     return dx * dx + dy * dy + dz * dz;
 }
 
+/* The context a kernel set was created with (exchange.c spreads with it). */
+cdc_context *cdc_kernels_context(const cdc_kernels *k);
+
 #endif

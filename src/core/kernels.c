@@ -351,6 +351,7 @@ void cdc_kernels_timing(const cdc_kernels *k, double *seconds_locate, double *se
     if (seconds_locate) *seconds_locate = k ? k->seconds_locate : 0.0;
     if (seconds_kernel) *seconds_kernel = k ? k->seconds_kernel : 0.0;
 }
+cdc_context *cdc_kernels_context(const cdc_kernels *k) { return k ? k->ctx : NULL; }
 const int32_t *cdc_kernels_offsets(const cdc_kernels *k) { return k ? k->offsets.v : NULL; }
 const int32_t *cdc_kernels_cells(const cdc_kernels *k) { return k ? k->cells.v : NULL; }
 const double *cdc_kernels_weights(const cdc_kernels *k) { return k ? k->weights.v : NULL; }

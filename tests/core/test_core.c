@@ -430,6 +430,85 @@ static void test_spread_gather_adjoint(void)
     cube_case_close(&t);
 }
 
+/* Newton's third law between the phases (cdc_exchange_sources), for every method and option: at a
+ * fluid velocity U the fluid gets sum_c V_c rho (-Ksl U + KslUs + f_fluid), which must be minus what
+ * the particles get, sum_i K_i (u_f,i - v_i) + f_i, with u_f = gather(U) (the void-fraction kernels)
+ * or, with background fields, gathered with other kernels (then u_k = gather(U) corrects it). */
+static void test_exchange_law(void)
+{
+    cube_case t;
+    if (cube_case_open(&t, 14, 12, 10)) return;
+    const double dx = CUBE_DX;
+    enum { NP = 120 };
+    static double x[3 * NP], r[NP], K[NP], v[3 * NP], f[3 * NP], uk[3 * NP], ub[3 * NP];
+    unsigned long long s = 77;
+    const int n = make_particles(&s, t.hi, dx, x, r, NP);
+    cdc_particles p = {n, x, r, NULL, NULL};
+    const size_t nc = (size_t)t.b.mesh.n_cells;
+    const double rho = 997.0;
+    double *U = malloc(3 * nc * sizeof(double)), *Ksl = malloc(nc * sizeof(double));
+    double *KslUs = malloc(3 * nc * sizeof(double)), *F = malloc(3 * nc * sizeof(double));
+    for (size_t c = 0; c < 3 * nc; ++c) U[c] = rnd(&s) - 0.3;
+    for (int i = 0; i < n; ++i) {
+        K[i] = 1e-4 * (0.1 + rnd(&s));
+        for (int d = 0; d < 3; ++d) { v[3 * i + d] = rnd(&s) - 0.5; f[3 * i + d] = 1e-5 * (rnd(&s) - 0.5); }
+    }
+    /* background kernels: bigParticle n = 5, as backgroundFields on */
+    cdc_kernel_params bprm = {0};
+    bprm.expansion_factor = 5;
+    cdc_kernels *bk = NULL;
+    CHECK(cdc_kernels_create(t.ctx, "bigParticle", &bprm, &bk) == CDC_OK && cdc_kernels_build(bk, &p) == CDC_OK,
+          "background kernels: %s", cdc_last_error(t.ctx));
+    cdc_gather(bk, U, 3, ub);
+    method_case cases[16];
+    const int nm = method_cases(dx, cases);
+    double worst = 0;
+    for (int m = 0; m < nm; ++m) {
+        cdc_kernels *k = NULL;
+        CHECK(cdc_kernels_create(t.ctx, cases[m].method, &cases[m].prm, &k) == CDC_OK &&
+                  cdc_kernels_build(k, &p) == CDC_OK, "%s: %s", cases[m].method, cdc_last_error(t.ctx));
+        cdc_gather(k, U, 3, uk);
+        for (int option = 0; option < 4; ++option) {
+            /* 0 implicit, 1 explicit, 2 implicit + background, 3 explicit + background */
+            const int background = option >= 2;
+            const cdc_exchange_in in = {n, K, v, background ? ub : uk, background ? uk : NULL, f, rho,
+                                        option % 2 ? CDC_EXCHANGE_EXPLICIT : CDC_EXCHANGE_IMPLICIT};
+            CHECK(cdc_exchange_sources(k, &in, Ksl, KslUs, F) == CDC_OK, "%s: %s", cases[m].method,
+                  cdc_last_error(t.ctx));
+            for (int d = 0; d < 3; ++d) {
+                double fluid = 0, particles = 0, scale = 0;
+                for (size_t c = 0; c < nc; ++c)
+                    fluid += rho * t.b.mesh.cell_volumes[c] *
+                             (-Ksl[c] * U[3 * c + d] + KslUs[3 * c + d] + F[3 * c + d]);
+                for (int i = 0; i < n; ++i) {
+                    const double fi = K[i] * (in.u_f[3 * i + d] - v[3 * i + d]) + f[3 * i + d];
+                    particles += fi;
+                    scale += fabs(fi);
+                }
+                const double rel = fabs(fluid + particles) / scale;
+                if (rel > worst) worst = rel;
+                CHECK(rel <= 1e-13, "%s (n=%g mirror=%d) option %d component %d: fluid %.17g particles %.17g",
+                      cases[m].method, cases[m].prm.expansion_factor, cases[m].prm.wall_mirror, option, d, fluid,
+                      particles);
+            }
+        }
+        cdc_kernels_destroy(k);
+    }
+    printf("    exchange law: every method, implicit/explicit, with and without background kernels: "
+           "|fluid + particles| <= %.1e x sum |f|\n", worst);
+    /* a particle count that is not the last build's is refused, naming it */
+    cdc_kernels *k = NULL;
+    cdc_kernels_create(t.ctx, "centre", NULL, &k);
+    cdc_kernels_build(k, &p);
+    const cdc_exchange_in bad = {n - 1, K, v, uk, NULL, f, rho, CDC_EXCHANGE_IMPLICIT};
+    CHECK(cdc_exchange_sources(k, &bad, Ksl, KslUs, F) == CDC_ERR_ARGUMENT &&
+              strstr(cdc_last_error(t.ctx), "last kernel build"), "count mismatch: %s", cdc_last_error(t.ctx));
+    cdc_kernels_destroy(k);
+    cdc_kernels_destroy(bk);
+    free(U); free(Ksl); free(KslUs); free(F);
+    cube_case_close(&t);
+}
+
 /* L1 distance between two kernel sets' weight vectors, per particle: mean and max. */
 static void kernel_l1(const cdc_kernels *a, const cdc_kernels *b, int n, int ncells, double *mean, double *worst)
 {
@@ -1384,6 +1463,7 @@ int main(void)
     run("locate_prisms", test_locate_prisms);
     run("conservation_all_methods", test_conservation_all_methods);
     run("spread_gather_adjoint", test_spread_gather_adjoint);
+    run("exchange_law", test_exchange_law);
     run("divided_vs_exact", test_divided_vs_exact);
     run("gaussian_symmetric", test_gaussian_symmetric);
     run("mirror_symmetry", test_mirror_symmetry);

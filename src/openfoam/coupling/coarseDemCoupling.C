@@ -349,11 +349,67 @@ void coarseDemCoupling::gather(const cdc_kernels* k, const double* field, int nc
 
 void coarseDemCoupling::spread(const cdc_kernels* k, const double* local, int ncomp, double* out)
 {
+    withGhosts(local, ncomp, buffer_);
+    demMesh_.check(cdc_spread(k, buffer_.data(), ncomp, out), "spread");
+}
+
+void coarseDemCoupling::withGhosts(const double* local, int ncomp, std::vector<double>& all)
+{
     const label n = particles_.size();
     halo_.toGhosts(local, ncomp, ghostBuffer_);
-    buffer_.assign(local, local + size_t(n)*ncomp);
-    buffer_.insert(buffer_.end(), ghostBuffer_.begin(), ghostBuffer_.end());
-    demMesh_.check(cdc_spread(k, buffer_.data(), ncomp, out), "spread");
+    all.assign(local, local + size_t(n)*ncomp);
+    all.insert(all.end(), ghostBuffer_.begin(), ghostBuffer_.end());
+}
+
+// The fluid's sources from the particles' forces, with the void-fraction kernels (src/core/exchange.c:
+// Newton's third law between the phases to round-off, for every method). Implicit drag: Ksl, KslUs and
+// the other reacting forces in fFluid, with the background-fields correction K (u_f - u_k) (the
+// implicit sink takes K u_k with U gathered by these kernels, the particles got K u_f). Explicit drag,
+// and smoothExchangeFields: the whole reaction in fFluid; with smoothExchangeFields and implicit drag
+// the smoothed Ksl enters as -Ksl (U_new - U) (KslUs = Ksl U), zero at the current U, which keeps the
+// fluid's response to a large dt Ksl/alpha stable (CFDEM's implicit/explicit split of the drag).
+void coarseDemCoupling::fluidSources(const volVectorField& U)
+{
+    const label n = particles_.size();
+    const bool smooth = voidFraction_.smoothsExchangeFields();
+    const bool implicit = implicitDrag_ && !smooth;
+    const cdc_kernels* k = voidFraction_.kernels();
+    withGhosts(K_.cdata(), 1, exchangeK_);
+    withGhosts(reinterpret_cast<const double*>(state_.v), 3, exchangeV_);
+    withGhosts(reinterpret_cast<const double*>(state_.Uf.cdata()), 3, exchangeUf_);
+    withGhosts(reinterpret_cast<const double*>(fReact_.cdata()), 3, exchangeF_);
+    const bool correct = implicit && backgroundKernels_;
+    if (correct)
+    {
+        vectorField uKernel(n);
+        gather(k, reinterpret_cast<const double*>(U.primitiveField().cdata()), 3, reinterpret_cast<double*>(uKernel.data()));
+        withGhosts(reinterpret_cast<const double*>(uKernel.cdata()), 3, exchangeUk_);
+    }
+    const cdc_exchange_in in =
+    {
+        int32_t(exchangeK_.size()), exchangeK_.data(), exchangeV_.data(), exchangeUf_.data(),
+        correct ? exchangeUk_.data() : nullptr, exchangeF_.data(), fluid_.rho,
+        implicit ? CDC_EXCHANGE_IMPLICIT : CDC_EXCHANGE_EXPLICIT
+    };
+    double* f = reinterpret_cast<double*>(fFluid.primitiveFieldRef().data());
+    demMesh_.check
+    (
+        cdc_exchange_sources(k, &in, Ksl.primitiveFieldRef().data(),
+                             reinterpret_cast<double*>(KslUs.primitiveFieldRef().data()), f),
+        "momentum exchange"
+    );
+    if (smooth)
+    {
+        // diffusion in flux form keeps sum(f V), so the balance holds as spread
+        voidFraction_.smoothLikeAlpha(f, 3);
+        if (implicitDrag_)
+        {
+            scalarField Kr(K_/fluid_.rho);
+            spread(k, Kr.cdata(), 1, Ksl.primitiveFieldRef().data());
+            voidFraction_.smoothLikeAlpha(Ksl.primitiveFieldRef().data(), 1);
+            KslUs.primitiveFieldRef() = Ksl.primitiveField()*U.primitiveField();
+        }
+    }
 }
 
 bool coarseDemCoupling::particleFieldsDue()
@@ -520,54 +576,7 @@ void coarseDemCoupling::couple
         exchangePending_ = nCouplings_ > 1;
     }
     exchangeDt_ = mesh_.time().deltaTValue();
-    const scalar rho = fluid_.rho;
-    const bool smoothSources = voidFraction_.smoothsExchangeFields();
-    vectorField q(n);
-    if (implicitDrag_ && !smoothSources)
-    {
-        scalarField Kr(K_/rho);
-        spread(Kr.cdata(), 1, Ksl.primitiveFieldRef().data());
-        forAll(q, i) q[i] = Kr[i]*state_.v[i];
-        spread(reinterpret_cast<const double*>(q.cdata()), 3, reinterpret_cast<double*>(KslUs.primitiveFieldRef().data()));
-        forAll(q, i) q[i] = -fReact_[i]/rho;
-        if (backgroundKernels_)
-        {
-            // The implicit sink Ksl U, spread with the void-fraction kernels, takes K u_s from the
-            // fluid (u_k: U gathered with those kernels), but the particles got K u_f with u_f from
-            // the background kernels. The difference K (u_f - u_k) goes to the fluid explicitly, so
-            // the phases exchange equal and opposite momentum (as CFDEM splits its drag into an
-            // implicit part and an explicit rest).
-            vectorField uKernel(n);
-            gather(voidFraction_.kernels(), reinterpret_cast<const double*>(U.primitiveField().cdata()), 3,
-                   reinterpret_cast<double*>(uKernel.data()));
-            forAll(q, i) q[i] -= Kr[i]*(state_.Uf[i] - uKernel[i]);
-        }
-    }
-    else
-    {
-        // the whole reaction as an explicit force density
-        forAll(q, i) q[i] = -(K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i])/rho;
-        if (implicitDrag_)
-        {
-            // smoothExchangeFields with implicit drag: the smoothed Ksl enters the fluid equation
-            // as -Ksl (U_new - U) (KslUs = Ksl U). Zero at the current U, so the phases exchange
-            // equal and opposite momentum; it keeps the fluid's response to the drag stable when
-            // dt Ksl/alpha is large (CFDEM's implicit/explicit split of the drag).
-            scalarField Kr(K_/rho);
-            spread(Kr.cdata(), 1, Ksl.primitiveFieldRef().data());
-            voidFraction_.smoothLikeAlpha(Ksl.primitiveFieldRef().data(), 1);
-            KslUs.primitiveFieldRef() = Ksl.primitiveField()*U.primitiveField();
-        }
-        else
-        {
-            Ksl.primitiveFieldRef() = 0;
-            KslUs.primitiveFieldRef() = Zero;
-        }
-    }
-    double* f = reinterpret_cast<double*>(fFluid.primitiveFieldRef().data());
-    spread(reinterpret_cast<const double*>(q.cdata()), 3, f);
-    // smoothExchangeFields: diffusion in flux form keeps sum(f V), so the balance holds as spread
-    if (smoothSources) voidFraction_.smoothLikeAlpha(f, 3);
+    fluidSources(U);
     timers_.stop();
 
     // output fields (no effect on the flow): particle volume x velocity, spread with the method's
@@ -575,6 +584,7 @@ void coarseDemCoupling::couple
     if ((alphaPUs.valid() || binKernels_) && particleFieldsDue())
     {
         timers_.start(stageTimers::fields);
+        vectorField q(n);
         forAll(q, i) q[i] = volume_[i]*state_.v[i];
         if (alphaPUs.valid())
         {

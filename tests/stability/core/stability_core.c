@@ -450,14 +450,13 @@ static int measure(cdc_context *ctx, const mcase *mc, pset *ps, double d, double
     res->limiter_ok = res->n_limited == res->n_over && res->moved >= res->excess * (1 - 1e-12) &&
                       ((res->n_over > 0) == (res->moved > 0));
 
-    /* momentum, as coarseDemCoupling builds it: the particle gets K (gather(U) - v) + f_o; the fluid
-     * (explicit) gets spread(-(K (u - v) + f_o)); (implicit) Ksl = spread(K), KslUs = spread(K v),
-     * and -Ksl U + KslUs - spread(f_o) in the fluid momentum equation */
+    /* momentum, as coarseDemCoupling builds it (cdc_exchange_sources): the particle gets
+     * K (gather(U) - v) + f_o; the fluid -Ksl U + KslUs + f_fluid, explicit and implicit */
     set_dynamics(ps, s);
     double *U = malloc(3 * nc * sizeof(double)), *u = malloc(3 * (size_t)ps->n * sizeof(double));
-    double *q = malloc(3 * (size_t)ps->n * sizeof(double));
+    double *q = NULL;
     double *F = malloc(3 * nc * sizeof(double)), *Ksl = malloc(nc * sizeof(double));
-    double *KUs = malloc(3 * nc * sizeof(double)), *Fo = malloc(3 * nc * sizeof(double));
+    double *KUs = malloc(3 * nc * sizeof(double)), *Fo = NULL;
     for (size_t c = 0; c < 3 * nc; ++c) U[c] = 0.1 * (rnd(s) - 0.5) + (c % 3 == 2 ? 0.05 : 0);
     int ok = cdc_gather(k, U, 3, u) == CDC_OK;
     double fp[3] = {0, 0, 0}, scale = 0;
@@ -466,30 +465,21 @@ static int measure(cdc_context *ctx, const mcase *mc, pset *ps, double d, double
             const double f = ps->K[i] * (u[3 * i + c3] - ps->v[3 * i + c3]) + ps->fo[3 * i + c3];
             fp[c3] += f;
             scale += fabs(f);
-            q[3 * i + c3] = -f;
         }
-    ok = ok && cdc_spread(k, q, 3, F) == CDC_OK;
-    double fe[3] = {0, 0, 0};
-    for (size_t c = 0; c < nc; ++c)
-        for (int c3 = 0; c3 < 3; ++c3) fe[c3] += F[3 * c + c3] * m->cell_volumes[c];
-    res->mom_explicit = 0;
-    for (int c3 = 0; c3 < 3; ++c3) res->mom_explicit = fmax(res->mom_explicit, fabs(fe[c3] + fp[c3]) / scale);
-    ok = ok && cdc_spread(k, ps->K, 1, Ksl) == CDC_OK;
-    for (int i = 0; i < ps->n; ++i)
-        for (int c3 = 0; c3 < 3; ++c3) {
-            q[3 * i + c3] = ps->K[i] * ps->v[3 * i + c3];
-        }
-    ok = ok && cdc_spread(k, q, 3, KUs) == CDC_OK;
-    for (int i = 0; i < ps->n; ++i)
-        for (int c3 = 0; c3 < 3; ++c3) q[3 * i + c3] = -ps->fo[3 * i + c3];
-    ok = ok && cdc_spread(k, q, 3, Fo) == CDC_OK;
-    double fi[3] = {0, 0, 0};
-    for (size_t c = 0; c < nc; ++c)
-        for (int c3 = 0; c3 < 3; ++c3)
-            fi[c3] += (-Ksl[c] * U[3 * c + c3] + KUs[3 * c + c3] + Fo[3 * c + c3]) * m->cell_volumes[c];
-    res->mom_implicit = 0;
-    for (int c3 = 0; c3 < 3; ++c3) res->mom_implicit = fmax(res->mom_implicit, fabs(fi[c3] + fp[c3]) / scale);
-    if (!ok) snprintf(res->err, sizeof res->err, "spread/gather: %s", cdc_last_error(ctx));
+    const double rho = 1.0;
+    for (int mode = 0; mode < 2 && ok; ++mode) {
+        const cdc_exchange_in in = {ps->n, ps->K, ps->v, u, NULL, ps->fo, rho,
+                                    mode ? CDC_EXCHANGE_EXPLICIT : CDC_EXCHANGE_IMPLICIT};
+        ok = cdc_exchange_sources(k, &in, Ksl, KUs, F) == CDC_OK;
+        double fe[3] = {0, 0, 0};
+        for (size_t c = 0; c < nc; ++c)
+            for (int c3 = 0; c3 < 3; ++c3)
+                fe[c3] += rho * (-Ksl[c] * U[3 * c + c3] + KUs[3 * c + c3] + F[3 * c + c3]) * m->cell_volumes[c];
+        double worst = 0;
+        for (int c3 = 0; c3 < 3; ++c3) worst = fmax(worst, fabs(fe[c3] + fp[c3]) / scale);
+        if (mode) res->mom_explicit = worst; else res->mom_implicit = worst;
+    }
+    if (!ok) snprintf(res->err, sizeof res->err, "exchange: %s", cdc_last_error(ctx));
 
     free(U); free(u); free(q); free(F); free(Ksl); free(KUs); free(Fo);
     free(a); free(pre);
