@@ -443,18 +443,37 @@ void coarseDemCoupling::couple
     const volScalarField& nuEff, const volVectorField* DUDt
 )
 {
-    const scalar pi = constant::mathematical::pi;
-    compareExchangeInTime(U);
+    compareExchangeInTime(U);                  // the momentum exchanged over the last DEM segment
     ++nCouplings_;
+    pullParticles();                           // particles_ from the DEM, ghosts_ from the neighbours
+    const cdc_particles cp = coreParticles();  // NaN positions and bad radii are caught by the core
+    const cdc_particles cg = {int32_t(ghosts_.size()), ghosts_.x.data(), ghosts_.radius.data(),
+                              reinterpret_cast<const int64_t*>(ghosts_.id.data()), nullptr};
+    updateVoidFraction(cp, cg, alpha);         // kernels, alpha_p, alpha
+    particleForces(U, alpha, p, nuEff, DUDt);  // K_, fOther_, fReact_ per particle
+    pushForces();                              // to the DEM for its next segment
+
+    timers_.start(stageTimers::exchange);
+    exchangeDt_ = mesh_.time().deltaTValue();
+    fluidSources(U);                           // Ksl, KslUs, fFluid with the same kernels
+    Ksl.correctBoundaryConditions();
+    KslUs.correctBoundaryConditions();
+    fFluid.correctBoundaryConditions();
+    timers_.stop();
+
+    outputFields(cp, cg);                      // alphaPUs, binned fields: no effect on the flow
+    recordBalances(U);                         // solid volume and momentum for the Coupling line
+    checkExplicitRange(alpha);
+}
+
+// The DEM's particles of this rank, checked against the last count, and the ghosts: copies of the
+// neighbours' particles whose kernels (or background kernels) reach into this rank's cells.
+void coarseDemCoupling::pullParticles()
+{
     dem_->pull(particles_);
     const label n = particles_.size();
     nParticles_ = returnReduce(n, sumOp<label>());
     checkParticleCount();
-
-    // particles for the core; NaN positions and bad radii are caught there (named by id)
-    const cdc_particles cp = coreParticles();
-
-    // ghosts: copies of the neighbours' particles whose kernels reach into this rank's cells
     timers_.start(stageTimers::exchange);
     reach_.resize(n);
     for (label i = 0; i < n; ++i)
@@ -465,10 +484,11 @@ void coarseDemCoupling::couple
     }
     halo_.update(particles_, reach_, ghosts_);
     timers_.stop();
-    const cdc_particles cg = {int32_t(ghosts_.size()), ghosts_.x.data(), ghosts_.radius.data(),
-                              reinterpret_cast<const int64_t*>(ghosts_.id.data()), nullptr};
+}
 
-    // kernels and alpha_p
+// Kernels, alpha_p (smoothed and limited by voidFraction), alpha, and the background kernels.
+void coarseDemCoupling::updateVoidFraction(const cdc_particles& cp, const cdc_particles& cg, volScalarField& alpha)
+{
     voidFraction_.update(cp, cg, halo_, alphaP.primitiveFieldRef());
     double tLocate = 0, tKernel = 0;
     cdc_kernels_timing(voidFraction_.kernels(), &tLocate, &tKernel);
@@ -483,8 +503,18 @@ void coarseDemCoupling::couple
         buildKernels(demMesh_, backgroundKernels_, cp, cg, halo_, "background kernels");
         timers_.stop();
     }
+}
 
-    // forces on the particles
+// The particles' diameters and volumes, the fluid sampled at them, and the enabled forces: the drag
+// coefficient K_ (drag K (u_f - v)), the other forces fOther_, of which fReact_ acts back on the fluid.
+void coarseDemCoupling::particleForces
+(
+    const volVectorField& U, const volScalarField& alpha, const volScalarField& p,
+    const volScalarField& nuEff, const volVectorField* DUDt
+)
+{
+    const scalar pi = constant::mathematical::pi;
+    const label n = particles_.size();
     timers_.start(stageTimers::forces);
     diameter_.resize(n);
     volume_.resize(n);
@@ -539,13 +569,19 @@ void coarseDemCoupling::couple
     {
         forAll(K_, i) K_[i] /= state_.alphaf[i];
     }
-    // implicitParticleDrag: the DEM gets the other forces as a force and the drag as K and u_f
+    timers_.stop();
+}
+
+// The forces to the DEM for its next segment: with implicitParticleDrag the other forces as a force
+// and the drag as K and u_f (the fix applies K (u_f - v) with v of each DEM step), else all as a force.
+// A run's first coupling after a restart keeps the forces stored in the DEM restart instead.
+void coarseDemCoupling::pushForces()
+{
+    const label n = particles_.size();
+    timers_.start(stageTimers::forces);
     force_.resize(3*n);
     dragK_.resize(implicitParticleDrag_ ? n : 0);
     dragUf_.resize(implicitParticleDrag_ ? 3*n : 0);
-    forceScale_ = 0;
-    vector fParticles(Zero);
-    nonReacting_ = Zero;
     for (label i = 0; i < n; ++i)
     {
         const vector f = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
@@ -556,13 +592,8 @@ void coarseDemCoupling::couple
             dragK_[i] = K_[i];
             for (direction d = 0; d < 3; ++d) dragUf_[3*i + d] = state_.Uf[i][d];
         }
-        fParticles += K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i];
-        nonReacting_ += fOther_[i] - fReact_[i];
-        forceScale_ += mag(f);
     }
     timers_.stop();
-
-    // fluid sources from the same kernels
     timers_.start(stageTimers::exchange);
     if (keepRestartForces_)
     {
@@ -575,47 +606,53 @@ void coarseDemCoupling::couple
         if (implicitParticleDrag_) dem_->pushDrag(dragK_, dragUf_);
         exchangePending_ = nCouplings_ > 1;
     }
-    exchangeDt_ = mesh_.time().deltaTValue();
-    fluidSources(U);
     timers_.stop();
+}
 
-    // output fields (no effect on the flow): particle volume x velocity, spread with the method's
-    // kernels and/or binned by centre; only on the steps they are sampled or written
-    if ((alphaPUs.valid() || binKernels_) && particleFieldsDue())
+// Output-only fields (no effect on the flow): particle volume x velocity, spread with the method's
+// kernels and/or binned by centre; only on the steps they are sampled or written.
+void coarseDemCoupling::outputFields(const cdc_particles& cp, const cdc_particles& cg)
+{
+    if (!(alphaPUs.valid() || binKernels_) || !particleFieldsDue()) return;
+    timers_.start(stageTimers::fields);
+    vectorField q(particles_.size());
+    forAll(q, i) q[i] = volume_[i]*state_.v[i];
+    if (alphaPUs.valid())
     {
-        timers_.start(stageTimers::fields);
-        vectorField q(n);
-        forAll(q, i) q[i] = volume_[i]*state_.v[i];
-        if (alphaPUs.valid())
-        {
-            double* aUs = reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data());
-            spread(reinterpret_cast<const double*>(q.cdata()), 3, aUs);
-            voidFraction_.smoothLikeAlpha(aUs, 3);   // as alphaP, so alphaPUs/alphaP is a velocity
-            alphaPUs().correctBoundaryConditions();
-        }
-        if (binKernels_) binParticles(cp, cg, q);
-        timers_.stop();
+        double* aUs = reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data());
+        spread(reinterpret_cast<const double*>(q.cdata()), 3, aUs);
+        voidFraction_.smoothLikeAlpha(aUs, 3);   // as alphaP, so alphaPUs/alphaP is a velocity
+        alphaPUs().correctBoundaryConditions();
     }
-    timers_.start(stageTimers::exchange);
-    Ksl.correctBoundaryConditions();
-    KslUs.correctBoundaryConditions();
-    fFluid.correctBoundaryConditions();
+    if (binKernels_) binParticles(cp, cg, q);
+    timers_.stop();
+}
 
-    // balances: solid volume in cells vs particles; momentum the fluid gets (at the current U)
-    // vs minus what the particles get from the reacting forces
-    const scalarField& V = mesh_.V();
+// Balances for the Coupling line: solid volume in cells vs particles; the momentum the fluid gets (at
+// the current U) vs minus what the particles get from the forces that act back on it.
+void coarseDemCoupling::recordBalances(const volVectorField& U)
+{
+    timers_.start(stageTimers::exchange);
+    vector fParticles(Zero);
+    forceScale_ = 0;
+    nonReacting_ = Zero;
+    forAll(K_, i)
+    {
+        const vector f = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
+        fParticles += K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i];
+        nonReacting_ += fOther_[i] - fReact_[i];
+        forceScale_ += mag(f);
+    }
     scalar vp = 0;
     for (const double v : volume_) vp += v;
     solidVolumeParticles_ = returnReduce(vp, sumOp<scalar>());
-    solidVolumeCells_ = gSum(alphaP.primitiveField()*V);
+    solidVolumeCells_ = gSum(alphaP.primitiveField()*mesh_.V());
     const vector fluidTotal = fluidMomentumSource(U);
     reduce(fParticles, sumOp<vector>());
     reduce(nonReacting_, sumOp<vector>());
     reduce(forceScale_, sumOp<scalar>());
     momentumImbalance_ = mag(fluidTotal + fParticles);
     timers_.stop();
-
-    checkExplicitRange(alpha);
 }
 
 void coarseDemCoupling::particleAccelerations()
