@@ -104,6 +104,27 @@ coarseDemCoupling::coarseDemCoupling
         mesh, dimensionedVector(dimAcceleration, Zero)
     )
 {
+    checkEntries();
+    const wordList names(readForceModels());
+    createBackgroundKernels();
+    createOutputFields();
+    dem_.reset(new liggghtsDem(mesh, dict_));
+    checkDemUnits(dem_->lammps(), mesh, dict_);    // DEM box and particles against the mesh
+    checkDemTimestep(dem_->lammps(), dict_);   // vs Rayleigh and Hertz times: warn / stop
+    keepRestartForces_ = dem_->restarted();
+
+    printSummary(names);
+}
+
+coarseDemCoupling::~coarseDemCoupling()
+{
+    cdc_kernels_destroy(backgroundKernels_);
+    cdc_kernels_destroy(binKernels_);
+}
+
+// The top-level entries with a range: refused, naming the entry, when out of it.
+void coarseDemCoupling::checkEntries()
+{
     const word modelType = dict_.get<word>("modelType");
     if (modelType != "A" && modelType != "B")
     {
@@ -130,7 +151,11 @@ coarseDemCoupling::coarseDemCoupling
             << "entry coarseGrainingFactor " << cgFactor_ << " in " << dict_.name()
             << " is invalid: must be >= 1" << exit(FatalIOError);
     }
+}
 
+// forceModels: the models, what they need, and the combinations that count a force twice or miss one.
+wordList coarseDemCoupling::readForceModels()
+{
     const wordList names(dict_.get<wordList>("forceModels"));
     bool hasDrag = false, hasGradP = false, hasArchimedes = false;
     forAll(names, i)
@@ -169,8 +194,13 @@ coarseDemCoupling::coarseDemCoupling
             << "forceModels in " << dict_.name() << " has both gradPForce and Archimedes: the pressure"
             << " gradient already carries the buoyancy, so it would be counted twice" << exit(FatalIOError);
     }
+    return names;
+}
 
-    if (dict_.lookupOrDefault<Switch>("backgroundFields", false))
+// backgroundFields on: u and alpha at the particles from bigParticle kernels (Zhang et al. eqs. 21-22).
+void coarseDemCoupling::createBackgroundKernels()
+{
+    if (!dict_.lookupOrDefault<Switch>("backgroundFields", false)) return;
     {
         cdc_kernel_params prm = readKernelParams(dict_, "backgroundFields", "bigParticle");
         if (prm.expansion_factor == 0) prm.expansion_factor = 5;
@@ -182,7 +212,12 @@ coarseDemCoupling::coarseDemCoupling
                 << exit(FatalIOError);
         }
     }
+}
 
+// Output-only fields: alphaPUs (solidVelocityField) and the binned particle fields.
+void coarseDemCoupling::createOutputFields()
+{
+    const fvMesh& mesh = mesh_;
     if (dict_.lookupOrDefault<Switch>("solidVelocityField", false))
     {
         if (!voidFraction_.canSmoothLikeAlpha())
@@ -229,12 +264,11 @@ coarseDemCoupling::coarseDemCoupling
             )
         );
     }
+}
 
-    dem_.reset(new liggghtsDem(mesh, dict_));
-    checkDemUnits(dem_->lammps(), mesh, dict_);    // DEM box and particles against the mesh
-    checkDemTimestep(dem_->lammps(), dict_);   // vs Rayleigh and Hertz times: warn / stop
-    keepRestartForces_ = dem_->restarted();
-
+void coarseDemCoupling::printSummary(const wordList& names) const
+{
+    const word modelType(modelB_ ? "B" : "A");
     Info<< "coarseDemCoupling: model " << modelType << ", voidFractionModel " << voidFraction_.method()
         << ", smoothing " << voidFraction_.smoothingName()
         << (voidFraction_.smoothsExchangeFields() ? " (alpha_p and the fluid's sources)" : "")
@@ -248,12 +282,7 @@ coarseDemCoupling::coarseDemCoupling
         Info<< ", fluid fraction relaxed over " << alphaRelaxationTime_ << " s (alphaRelaxationTime)";
     }
     Info<< endl;
-}
-
-coarseDemCoupling::~coarseDemCoupling()
-{
-    cdc_kernels_destroy(backgroundKernels_);
-    cdc_kernels_destroy(binKernels_);
+    Info<< endl;
 }
 
 void coarseDemCoupling::evolveDem()
