@@ -1,0 +1,223 @@
+/*---------------------------------------------------------------------------*\
+    coarseDemCoupling, the particle-fluid exchange: the fluid sampled at the
+    particles (gather, background kernels, dv/dt), the fluid's sources from
+    the particles' forces (src/core/exchange.c) and the output-only particle
+    fields. Values of ghosts come from their owners (particleHalo).
+\*---------------------------------------------------------------------------*/
+#include "coarseDemCoupling.H"
+#include "fvc.H"
+#include "noAliasFvc.H"
+
+#include <cmath>
+
+namespace Foam
+{
+
+void coarseDemCoupling::sampleFluid
+(
+    const volVectorField& U, const volScalarField& alpha, const volScalarField& p,
+    const volScalarField& nuEff, const volVectorField* DUDt
+)
+{
+    const cdc_kernels* k = backgroundKernels_ ? backgroundKernels_ : voidFraction_.kernels();
+    const label n = state_.n;
+    auto gatherVector = [&](const vectorField& field, vectorField& out)
+    {
+        out.setSize(n);
+        gather(k, reinterpret_cast<const double*>(field.cdata()), 3, reinterpret_cast<double*>(out.data()));
+    };
+    gatherVector(U.primitiveField(), state_.Uf);
+    state_.alphaf.setSize(n);
+    gather(k, alpha.primitiveField().cdata(), 1, state_.alphaf.data());
+    if (needs_ & forceModel::needGradP)
+    {
+        gatherVector(fvc::grad(p)().primitiveField(), state_.gradP);
+    }
+    if (needs_ & forceModel::needDivTau)
+    {
+        const volVectorField divTau
+        (
+            fvc::laplacian(nuEff, U) + fvc::div(nuEff*noAliasFvc::dev2GradUT(U))
+        );
+        gatherVector(divTau.primitiveField(), state_.divTau);
+    }
+    if ((needs_ & forceModel::needDUfDt) && DUDt)
+    {
+        gatherVector(DUDt->primitiveField(), state_.DUfDt);
+    }
+    if (needs_ & forceModel::needVorticity)
+    {
+        gatherVector(noAliasFvc::curl(U)().primitiveField(), state_.vorticity);
+    }
+}
+
+void coarseDemCoupling::gather(const cdc_kernels* k, const double* field, int ncomp, double* out)
+{
+    const label n = particles_.size(), ng = ghosts_.size();
+    buffer_.resize(size_t(n + ng)*ncomp);
+    demMesh_.check(cdc_gather(k, field, ncomp, buffer_.data()), "gather");
+    halo_.addToOwners(buffer_.data() + size_t(n)*ncomp, ncomp, buffer_.data());
+    std::copy(buffer_.begin(), buffer_.begin() + size_t(n)*ncomp, out);
+}
+
+void coarseDemCoupling::spread(const cdc_kernels* k, const double* local, int ncomp, double* out)
+{
+    withGhosts(local, ncomp, buffer_);
+    demMesh_.check(cdc_spread(k, buffer_.data(), ncomp, out), "spread");
+}
+
+void coarseDemCoupling::withGhosts(const double* local, int ncomp, std::vector<double>& all)
+{
+    const label n = particles_.size();
+    halo_.toGhosts(local, ncomp, ghostBuffer_);
+    all.assign(local, local + size_t(n)*ncomp);
+    all.insert(all.end(), ghostBuffer_.begin(), ghostBuffer_.end());
+}
+
+// The fluid's sources from the particles' forces, with the void-fraction kernels (src/core/exchange.c:
+// Newton's third law between the phases to round-off, for every method). Implicit drag: Ksl, KslUs and
+// the other reacting forces in fFluid, with the background-fields correction K (u_f - u_k) (the
+// implicit sink takes K u_k with U gathered by these kernels, the particles got K u_f). Explicit drag,
+// and smoothExchangeFields: the whole reaction in fFluid; with smoothExchangeFields and implicit drag
+// the smoothed Ksl enters as -Ksl (U_new - U) (KslUs = Ksl U), zero at the current U, which keeps the
+// fluid's response to a large dt Ksl/alpha stable (CFDEM's implicit/explicit split of the drag).
+void coarseDemCoupling::fluidSources(const volVectorField& U)
+{
+    const label n = particles_.size();
+    const bool smooth = voidFraction_.smoothsExchangeFields();
+    const bool implicit = implicitDrag_ && !smooth;
+    const cdc_kernels* k = voidFraction_.kernels();
+    withGhosts(K_.cdata(), 1, exchangeK_);
+    withGhosts(reinterpret_cast<const double*>(state_.v), 3, exchangeV_);
+    withGhosts(reinterpret_cast<const double*>(state_.Uf.cdata()), 3, exchangeUf_);
+    withGhosts(reinterpret_cast<const double*>(fReact_.cdata()), 3, exchangeF_);
+    const bool correct = implicit && backgroundKernels_;
+    if (correct)
+    {
+        vectorField uKernel(n);
+        gather(k, reinterpret_cast<const double*>(U.primitiveField().cdata()), 3, reinterpret_cast<double*>(uKernel.data()));
+        withGhosts(reinterpret_cast<const double*>(uKernel.cdata()), 3, exchangeUk_);
+    }
+    const cdc_exchange_in in =
+    {
+        int32_t(exchangeK_.size()), exchangeK_.data(), exchangeV_.data(), exchangeUf_.data(),
+        correct ? exchangeUk_.data() : nullptr, exchangeF_.data(), fluid_.rho,
+        implicit ? CDC_EXCHANGE_IMPLICIT : CDC_EXCHANGE_EXPLICIT
+    };
+    double* f = reinterpret_cast<double*>(fFluid.primitiveFieldRef().data());
+    demMesh_.check
+    (
+        cdc_exchange_sources(k, &in, Ksl.primitiveFieldRef().data(),
+                             reinterpret_cast<double*>(KslUs.primitiveFieldRef().data()), f),
+        "momentum exchange"
+    );
+    if (smooth)
+    {
+        // diffusion in flux form keeps sum(f V), so the balance holds as spread
+        voidFraction_.smoothLikeAlpha(f, 3);
+        if (implicitDrag_)
+        {
+            scalarField Kr(K_/fluid_.rho);
+            spread(k, Kr.cdata(), 1, Ksl.primitiveFieldRef().data());
+            voidFraction_.smoothLikeAlpha(Ksl.primitiveFieldRef().data(), 1);
+            KslUs.primitiveFieldRef() = Ksl.primitiveField()*U.primitiveField();
+        }
+    }
+}
+
+bool coarseDemCoupling::particleFieldsDue()
+{
+    const Time& rt = mesh_.time();
+    if (particleFieldsInterval_ <= 0) return true;
+    // the step nearest each multiple of the interval since the start, as an adjustableRunTime
+    // function object samples (Time's and timeControl's index rule), plus the write times
+    const label index = label((rt.value() - rt.startTime().value() + 0.5*rt.deltaTValue())/particleFieldsInterval_);
+    if (index <= particleFieldsIndex_ && !rt.writeTime()) return false;
+    particleFieldsIndex_ = max(index, particleFieldsIndex_);
+    return true;
+}
+
+void coarseDemCoupling::binParticles
+(
+    const cdc_particles& local, const cdc_particles& ghosts, const vectorField& volumeVelocity
+)
+{
+    buildKernels(demMesh_, binKernels_, local, ghosts, halo_, "binnedParticleFields (centre kernels)");
+    spread(binKernels_, volume_.data(), 1, alphaPBinned().primitiveFieldRef().data());
+    spread(binKernels_, reinterpret_cast<const double*>(volumeVelocity.cdata()), 3,
+           reinterpret_cast<double*>(alphaPUsBinned().primitiveFieldRef().data()));
+    alphaPBinned().correctBoundaryConditions();
+    alphaPUsBinned().correctBoundaryConditions();
+}
+
+// Output-only fields (no effect on the flow): particle volume x velocity, spread with the method's
+// kernels and/or binned by centre; only on the steps they are sampled or written.
+void coarseDemCoupling::outputFields(const cdc_particles& cp, const cdc_particles& cg)
+{
+    if (!(alphaPUs.valid() || binKernels_) || !particleFieldsDue()) return;
+    timers_.start(stageTimers::fields);
+    vectorField q(particles_.size());
+    forAll(q, i) q[i] = volume_[i]*state_.v[i];
+    if (alphaPUs.valid())
+    {
+        double* aUs = reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data());
+        spread(reinterpret_cast<const double*>(q.cdata()), 3, aUs);
+        voidFraction_.smoothLikeAlpha(aUs, 3);   // as alphaP, so alphaPUs/alphaP is a velocity
+        alphaPUs().correctBoundaryConditions();
+    }
+    if (binKernels_) binParticles(cp, cg, q);
+    timers_.stop();
+}
+
+void coarseDemCoupling::particleAccelerations()
+{
+    const label n = particles_.size();
+    const scalar dt = mesh_.time().deltaTValue();
+    Map<vector> current(2*n);
+    for (label i = 0; i < n; ++i) current.set(label(particles_.id[i]), state_.v[i]);
+    if (Pstream::parRun())
+    {
+        // A particle that changed rank since the last coupling left its velocity on the old rank:
+        // every rank shares the velocities of its particles that are gone (few: those that crossed).
+        List<labelList> goneIds(Pstream::nProcs());
+        List<vectorField> goneVelocities(Pstream::nProcs());
+        DynamicList<label> ids;
+        DynamicList<vector> velocities;
+        forAllConstIters(previousVelocity_, iter)
+        {
+            if (!current.found(iter.key()))
+            {
+                ids.append(iter.key());
+                velocities.append(iter.val());
+            }
+        }
+        goneIds[Pstream::myProcNo()] = ids;
+        goneVelocities[Pstream::myProcNo()] = velocities;
+        Pstream::gatherList(goneIds);
+        Pstream::scatterList(goneIds);
+        Pstream::gatherList(goneVelocities);
+        Pstream::scatterList(goneVelocities);
+        forAll(goneIds, proci)
+        {
+            if (proci == Pstream::myProcNo()) continue;
+            forAll(goneIds[proci], k)
+            {
+                if (current.found(goneIds[proci][k])) previousVelocity_.set(goneIds[proci][k], goneVelocities[proci][k]);
+            }
+        }
+    }
+    state_.dvdt.setSize(n);
+    label nNew = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const auto iter = previousVelocity_.cfind(label(particles_.id[i]));
+        state_.dvdt[i] = iter.found() ? (state_.v[i] - *iter)/dt : Zero;
+        if (!iter.found()) ++nNew;
+    }
+    reduce(nNew, sumOp<label>());
+    if (firstDvDt_ < 0) firstDvDt_ = nNew;
+    else unknownDvDt_ += nNew;
+    previousVelocity_.transfer(current);
+}
+
+} // End namespace Foam

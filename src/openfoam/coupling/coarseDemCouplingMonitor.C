@@ -1,0 +1,193 @@
+/*---------------------------------------------------------------------------*\
+    coarseDemCoupling, the diagnostics: they change no number the fluid or the
+    DEM sees. Balances of solid volume and momentum, the momentum exchanged in
+    time over each DEM segment, lost particles, explicit coupling beyond its
+    range, and the Coupling / Exchange lines of the log.
+\*---------------------------------------------------------------------------*/
+#include "coarseDemCoupling.H"
+
+#include <cmath>
+#include <string>
+
+namespace Foam
+{
+
+//- Largest step x rate over all ranks and how many exceed 1 (the explicit update's range)
+static void tallyStepRatios(const UList<scalar>& ratio, scalar& largest, label& nBeyond)
+{
+    largest = 0;
+    nBeyond = 0;
+    for (const scalar r : ratio)
+    {
+        largest = max(largest, r);
+        if (r > 1) ++nBeyond;
+    }
+    reduce(largest, maxOp<scalar>());
+    reduce(nBeyond, sumOp<label>());
+}
+
+Foam::vector coarseDemCoupling::fluidMomentumSource(const volVectorField& U) const
+{
+    const scalarField& V = mesh_.V();
+    return fluid_.rho*gSum
+    (
+        (fFluid.primitiveField() - Ksl.primitiveField()*U.primitiveField() + KslUs.primitiveField())*V
+    );
+}
+
+void coarseDemCoupling::compareExchangeInTime(const volVectorField& U)
+{
+    // before the exchange fields are replaced: U is the fluid's velocity after the step that used
+    // them, and the DEM has just run the segment that used them
+    if (!exchangePending_) return;
+    const vector particles =
+        returnReduce(dem_->couplingImpulse(), sumOp<vector>()) - segmentSeconds_*nonReacting_;
+    const vector fluid = exchangeDt_*fluidMomentumSource(U);
+    // relative to the larger of the step's exchange at the coupling (CFD step x sum |f|) and either
+    // phase's impulse: at a start from rest the forces at the coupling are near zero while the fluid's
+    // implicit drag at its new velocity is not, and the difference is then the whole impulse (1)
+    const scalar exchanged = exchangeDt_*forceScale_;
+    const scalar scale = max(exchanged, max(mag(particles), mag(fluid)));
+    exchangeLastRel_ = scale > 0 ? mag(particles + fluid)/scale : 0;
+    exchangeMaxRel_ = max(exchangeMaxRel_, exchangeLastRel_);
+    exchangeNet_ += particles + fluid;
+    exchangeGross_ += exchanged;
+    ++nExchangesCompared_;
+}
+
+// Balances for the Coupling line: solid volume in cells vs particles; the momentum the fluid gets (at
+// the current U) vs minus what the particles get from the forces that act back on it.
+void coarseDemCoupling::recordBalances(const volVectorField& U)
+{
+    timers_.start(stageTimers::exchange);
+    vector fParticles(Zero);
+    forceScale_ = 0;
+    nonReacting_ = Zero;
+    forAll(K_, i)
+    {
+        const vector f = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
+        fParticles += K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i];
+        nonReacting_ += fOther_[i] - fReact_[i];
+        forceScale_ += mag(f);
+    }
+    scalar vp = 0;
+    for (const double v : volume_) vp += v;
+    solidVolumeParticles_ = returnReduce(vp, sumOp<scalar>());
+    solidVolumeCells_ = gSum(alphaP.primitiveField()*mesh_.V());
+    const vector fluidTotal = fluidMomentumSource(U);
+    reduce(fParticles, sumOp<vector>());
+    reduce(nonReacting_, sumOp<vector>());
+    reduce(forceScale_, sumOp<scalar>());
+    momentumImbalance_ = mag(fluidTotal + fParticles);
+    timers_.stop();
+}
+
+void coarseDemCoupling::checkParticleCount()
+{
+    // LIGGGHTS deletes particles that leave its box (boundary f) and may only say so at its next
+    // thermo output: a drop is lost solid mass, so it stops the run unless it is intended
+    if (nParticlesBefore_ >= 0 && nParticles_ < nParticlesBefore_ && !allowParticleLoss_)
+    {
+        FatalErrorInFunction
+            << "the DEM lost " << nParticlesBefore_ - nParticles_ << " particle(s) in the CFD step"
+            << " ending at time " << mesh_.time().timeName() << " (" << nParticlesBefore_ << " -> "
+            << nParticles_ << "): LIGGGHTS deletes particles that leave its box; check the DEM"
+            << " walls and the time steps, or set allowParticleLoss true in " << dict_.name()
+            << " if particles are removed on purpose" << exit(FatalError);
+    }
+    nParticlesBefore_ = nParticles_;
+}
+
+void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    const scalar dtParticle = implicitParticleDrag_ ? dem_->timestep() : dt;
+    const label n = particles_.size();
+    scalarField particleRatio(n);
+    forAll(particleRatio, i) particleRatio[i] = dtParticle*K_[i]/(particles_.density[i]*volume_[i]);
+    tallyStepRatios(particleRatio, particleDragRatio_, nParticlesBeyond_);
+    if (nParticlesBeyond_ > 0 && !warnedParticleSide_)
+    {
+        WarningInFunction
+            << "explicit particle-side coupling beyond its range at time " << mesh_.time().timeName()
+            << ": " << nParticlesBeyond_ << " particle(s) have "
+            << (implicitParticleDrag_ ? "DEM step" : "CFD step") << " x K/m > 1 (max "
+            << particleDragRatio_ << "); the drag K (u_f - v) is held for that step, so their"
+            << " velocity overshoots (unstable above 2): "
+            << (implicitParticleDrag_ ? "reduce the DEM time step"
+                                      : "set implicitParticleDrag true or reduce couplingInterval")
+            << endl;
+        warnedParticleSide_ = true;
+    }
+
+    fluidDragRatio_ = 0;
+    nCellsBeyond_ = 0;
+    if (implicitDrag_) return;   // Ksl is implicit in the fluid momentum equation: no limit
+    const scalarField Kr(K_/fluid_.rho);
+    scalarField KslExplicit(mesh_.nCells(), 0);
+    spread(Kr.cdata(), 1, KslExplicit.data());
+    tallyStepRatios(dt*KslExplicit/alpha.primitiveField(), fluidDragRatio_, nCellsBeyond_);
+    if (nCellsBeyond_ > 0 && !warnedFluidSide_)
+    {
+        WarningInFunction
+            << "explicit fluid drag beyond its range at time " << mesh_.time().timeName() << ": "
+            << nCellsBeyond_ << " cell(s) have CFD step x Ksl/alpha_f > 1 (max " << fluidDragRatio_
+            << "); set implicitDrag true in " << dict_.name() << " or reduce couplingInterval" << endl;
+        warnedFluidSide_ = true;
+    }
+}
+
+void coarseDemCoupling::report(Ostream& os) const
+{
+    const scalar volErr = solidVolumeParticles_ > 0
+        ? mag(solidVolumeCells_ - solidVolumeParticles_)/solidVolumeParticles_ : 0;
+    os  << "Coupling: particles " << nParticles_
+        << ", solid volume particles " << solidVolumeParticles_ << " cells " << solidVolumeCells_
+        << " (rel. err " << volErr << ")"
+        << ", momentum imbalance " << momentumImbalance_ << " N of " << forceScale_ << " N"
+        << ", limiter moved " << returnReduce(voidFraction_.movedVolume(), sumOp<scalar>()) << " m3 in "
+        << returnReduce(voidFraction_.nLimitedCells(), sumOp<label>()) << " cells"
+        << ", drag dt K/m max " << particleDragRatio_ << " (" << nParticlesBeyond_ << " particles > 1)";
+    if (alphaRelaxationTime_ > 0)
+    {
+        os  << ", alpha relaxed over " << alphaRelaxationTime_ << " s: solid volume 1 - alpha "
+            << solidVolumeAlpha_ << " (rel. err " << (solidVolumeParticles_ > 0
+               ? mag(solidVolumeAlpha_ - solidVolumeParticles_)/solidVolumeParticles_ : 0) << ")";
+    }
+    if (needs_ & forceModel::needDvDt)
+    {
+        // particles without a velocity of the last coupling (at the start or restart: all; later:
+        // inserted ones) get dv/dt = 0 for that step
+        os  << ", dv/dt unknown for " << firstDvDt_ << " particles at the first coupling, "
+            << unknownDvDt_ << " since";
+    }
+    if (!implicitDrag_)
+    {
+        os  << ", explicit fluid drag dt Ksl/alpha max " << fluidDragRatio_ << " (" << nCellsBeyond_
+            << " cells > 1)";
+    }
+    os  << endl;
+    os  << "Exchange in time: " << nExchangesCompared_ << " couplings compared, |particles' + fluid's"
+        << " impulse| of a coupling step last " << exchangeLastRel_ << " max " << exchangeMaxRel_
+        << " x exchange; since the start net " << exchangeNet_ << " N s of " << exchangeGross_
+        << " N s" << endl;
+
+    // particles reaching through the mesh boundary: a DEM wall's contact overlap (small depths), or a
+    // particle leaving the mesh (large ones); counted here, at reports only (six locations each)
+    const cdc_particles cp = coreParticles();
+    int32_t nOut = 0;
+    double depth = 0;
+    int64_t id = -1;
+    demMesh_.check(cdc_kernels_partly_outside(voidFraction_.kernels(), &cp, &nOut, &depth, &id),
+                   "particles partly outside the mesh");
+    const label nOutAll = returnReduce(label(nOut), sumOp<label>());
+    if (nOutAll > 0)
+    {
+        const scalar deepest = returnReduce(scalar(depth), maxOp<scalar>());
+        const scalar idDeepest = returnReduce(depth == deepest ? scalar(id) : scalar(-1), maxOp<scalar>());
+        os  << "Particles partly outside the mesh: " << nOutAll << ", the deepest reaches " << 100*deepest
+            << " % of its radius beyond it (particle " << std::to_string(std::llround(idDeepest)).c_str() << ")" << endl;
+    }
+}
+
+} // End namespace Foam
