@@ -37,6 +37,12 @@ int main(int argc, char *argv[])
         " swappable void-fraction kernels (constant/couplingProperties)"
     );
 
+    argList::addBoolOption
+    (
+        "frozenParticles",
+        "couple once at the start, then solve the fluid alone with the particles, alpha and the"
+        " exchange fields frozen (bench/coupled: the fluid's share of a coupled run)"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
@@ -45,6 +51,12 @@ int main(int argc, char *argv[])
     #include "initContinuityErrs.H"
 
     // CFD step = couplingInterval DEM steps
+    const bool frozenParticles = args.found("frozenParticles");
+    if (frozenParticles)
+    {
+        Info<< "frozenParticles: the DEM and the coupling stay at the start's state; the fluid alone is"
+            << " solved" << nl << endl;
+    }
     const bool adjustTimeStep = runTime.controlDict().lookupOrDefault<Switch>("adjustTimeStep", false);
     const scalar maxCo = runTime.controlDict().lookupOrDefault<scalar>("maxCo", 0.5);
     label nCouple = coupling.couplingInterval();
@@ -119,9 +131,11 @@ int main(int argc, char *argv[])
         ++runTime;
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
-        coupling.evolveDem();
-
-        couple();
+        if (!frozenParticles)
+        {
+            coupling.evolveDem();
+            couple();
+        }
         alphaf = fvc::interpolate(alpha);
         alphaPhi = alphaf*phi;
 
