@@ -45,14 +45,16 @@ void coarseDemCoupling::checkEntries()
 wordList coarseDemCoupling::readForceModels()
 {
     const wordList names(dict_.get<wordList>("forceModels"));
-    bool hasDrag = false, hasGradP = false, hasArchimedes = false;
+    bool hasDrag = false, hasGradP = false;
+    wordList buoyant;
     forAll(names, i)
     {
         forces_.append(forceModel::New(names[i], dict_));
-        needs_ |= forces_.last().needs();
-        hasDrag = hasDrag || forces_.last().isDrag();
-        hasGradP = hasGradP || names[i] == "gradPForce";
-        hasArchimedes = hasArchimedes || names[i] == "Archimedes";
+        const forceModel& fm = forces_.last();
+        needs_ |= fm.needs();
+        hasDrag = hasDrag || fm.isDrag();
+        hasGradP = hasGradP || fm.carriesPressureGradient();
+        if (fm.carriesBuoyancy()) buoyant.append(fm.name());
     }
     if (!hasDrag)
     {
@@ -69,18 +71,19 @@ wordList coarseDemCoupling::readForceModels()
             << " fraction)" << exit(FatalIOError);
     }
     dragOverAlpha_ = modelB_ && !hasGradP;
-    if (dragOverAlpha_ && !hasArchimedes && mag(fluid_.g) > 0)
+    if (dragOverAlpha_ && buoyant.empty() && mag(fluid_.g) > 0)
     {
         WarningInFunction
             << "modelType B without gradPForce or Archimedes in " << dict_.name() << ": the particles"
             << " get no buoyancy (rho_f V g); add Archimedes (drag / alpha_f carries the rest of the"
             << " pressure gradient)" << endl;
     }
-    if (hasGradP && hasArchimedes)
+    if (buoyant.size() > 1)
     {
         FatalIOErrorInFunction(dict_)
-            << "forceModels in " << dict_.name() << " has both gradPForce and Archimedes: the pressure"
-            << " gradient already carries the buoyancy, so it would be counted twice" << exit(FatalIOError);
+            << "forceModels in " << dict_.name() << " has " << buoyant << ", which all carry the buoyancy:"
+            << " it would be counted twice (the pressure gradient holds the hydrostatic part)"
+            << exit(FatalIOError);
     }
     return names;
 }

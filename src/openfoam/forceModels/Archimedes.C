@@ -16,6 +16,7 @@ public:
     TypeName("Archimedes");
     Archimedes(const word& name, const dictionary& props) : forceModel(name, props) {}
     bool reactsOnFluid(bool modelB) const override { return modelB; }
+    bool carriesBuoyancy() const override { return true; }
 
     void addForce(const particleFluidState& s, const fluidProperties& fl, vectorField& f) const override
     {

@@ -16,6 +16,8 @@ public:
     gradPForce(const word& name, const dictionary& props) : forceModel(name, props) {}
     int needs() const override { return needGradP; }
     bool reactsOnFluid(bool modelB) const override { return modelB; }
+    bool carriesPressureGradient() const override { return true; }
+    bool carriesBuoyancy() const override { return true; }   // p holds the hydrostatic part
 
     void addForce(const particleFluidState& s, const fluidProperties& fl, vectorField& f) const override
     {
