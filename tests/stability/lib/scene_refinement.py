@@ -9,29 +9,19 @@ PASS if the run converges: the difference between the two finest steps is below 
 rise and smaller than the difference between the two coarsest. The DEM step is the same in every case;
 the cases differ only in couplingInterval.
 """
-import argparse, glob, os
+import argparse
 
-
-def zmean(path):
-    lines = open(path).read().split("\n")
-    i = next(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
-    z = [float(l.split()[3]) for l in lines[i + 1:] if l.strip()]
-    return sum(z) / len(z)
-
-
-def params(case):
-    text = open(os.path.join(case, "case.params")).read()
-    return dict(l.split("=", 1) for l in text.split("\n") if "=" in l)
+import stablib
 
 
 def rises(case):
     """{DEM step: rise of the mean particle height (m) since the first dump}"""
-    dumps = glob.glob(os.path.join(case, "post", "dump*.liggghts"))
-    steps = {int(os.path.basename(f)[4:-9]): f for f in dumps}
-    if not steps:
+    d = stablib.dumps(case)
+    if not d:
         return {}
-    z0 = zmean(steps[min(steps)])
-    return {s: zmean(f) - z0 for s, f in sorted(steps.items())}
+    zmean = lambda rows: sum(r[2] for r in rows.values()) / len(rows)
+    z0 = zmean(d[min(d)])
+    return {s: zmean(rows) - z0 for s, rows in d.items()}
 
 
 def main():
@@ -42,7 +32,7 @@ def main():
     a = ap.parse_args()
     rows = []
     for c in a.cases:
-        p = params(c)
+        p = stablib.params(c)
         r = rises(c)
         if not r:
             print("FAIL %s: no particle dumps in %s (run failed?)" % (a.label, c))
