@@ -454,9 +454,8 @@ static int measure(cdc_context *ctx, const mcase *mc, pset *ps, double d, double
      * K (gather(U) - v) + f_o; the fluid -Ksl U + KslUs + f_fluid, explicit and implicit */
     set_dynamics(ps, s);
     double *U = malloc(3 * nc * sizeof(double)), *u = malloc(3 * (size_t)ps->n * sizeof(double));
-    double *q = NULL;
     double *F = malloc(3 * nc * sizeof(double)), *Ksl = malloc(nc * sizeof(double));
-    double *KUs = malloc(3 * nc * sizeof(double)), *Fo = NULL;
+    double *KUs = malloc(3 * nc * sizeof(double));
     for (size_t c = 0; c < 3 * nc; ++c) U[c] = 0.1 * (rnd(s) - 0.5) + (c % 3 == 2 ? 0.05 : 0);
     int ok = cdc_gather(k, U, 3, u) == CDC_OK;
     double fp[3] = {0, 0, 0}, scale = 0;
@@ -481,7 +480,7 @@ static int measure(cdc_context *ctx, const mcase *mc, pset *ps, double d, double
     }
     if (!ok) snprintf(res->err, sizeof res->err, "exchange: %s", cdc_last_error(ctx));
 
-    free(U); free(u); free(q); free(F); free(Ksl); free(KUs); free(Fo);
+    free(U); free(u); free(F); free(Ksl); free(KUs);
     free(a); free(pre);
     cdc_kernels_destroy(k);
     return ok;
