@@ -117,8 +117,10 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
         voidFraction_.smoothLikeAlpha(f, 3);
         if (implicitDrag_)
         {
-            scalarField Kr(K_/fluid_.rho);
-            spread(k, Kr.cdata(), 1, Ksl.primitiveFieldRef().data());
+            // K of the local particles and ghosts, already gathered above: no second halo exchange
+            std::vector<double> Kr(exchangeK_);
+            for (double& x : Kr) x /= fluid_.rho;
+            demMesh_.check(cdc_spread(k, Kr.data(), 1, Ksl.primitiveFieldRef().data()), "spread");
             voidFraction_.smoothLikeAlpha(Ksl.primitiveFieldRef().data(), 1);
             KslUs.primitiveFieldRef() = Ksl.primitiveField()*U.primitiveField();
         }
