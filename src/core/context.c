@@ -156,10 +156,19 @@ static cdc_status build_addressing(cdc_context *ctx)
 }
 
 /* Bounding boxes from the face points; a cell "is a box" when its volume equals its bounding
- * box's volume (a convex cell inside its box with the same volume is the box). */
-static void build_boxes(cdc_context *ctx)
+ * box's volume (a convex cell inside its box with the same volume is the box). Also the faces'
+ * unit normals and the bound on a location walk. */
+static cdc_status build_boxes(cdc_context *ctx)
 {
     const cdc_mesh *m = ctx->mesh;
+    for (int32_t f = 0; f < m->n_faces; ++f) {
+        const double *S = m->face_areas + 3 * (size_t)f;
+        const double mag = sqrt(S[0] * S[0] + S[1] * S[1] + S[2] * S[2]);
+        if (!(mag > 0.0) || !isfinite(mag))
+            return cdc_fail(NULL, CDC_ERR_MESH, "mesh: face %d has area %g (must be > 0)", (int)f, mag);
+        for (int d = 0; d < 3; ++d) ctx->face_unit_normal[3 * (size_t)f + d] = S[d] / mag;
+    }
+    ctx->walk_max_steps = 4 * (int32_t)cbrt((double)m->n_cells) + 64;
     for (int k = 0; k < 3; ++k) {
         ctx->mesh_lo[k] = INFINITY;
         ctx->mesh_hi[k] = -INFINITY;
@@ -187,6 +196,7 @@ static void build_boxes(cdc_context *ctx)
         }
         ctx->total_volume += m->cell_volumes[c];
     }
+    return CDC_OK;
 }
 
 cdc_status cdc_context_create(const cdc_mesh *mesh, cdc_context **out)
@@ -204,10 +214,11 @@ cdc_status cdc_context_create(const cdc_mesh *mesh, cdc_context **out)
         ctx->cell_bbox = malloc(6 * nc * sizeof(double));
         ctx->cell_is_box = calloc(nc, 1);
         ctx->stamp = calloc(nc, sizeof(int32_t));
-        if (!ctx->cell_bbox || !ctx->cell_is_box || !ctx->stamp)
+        ctx->face_unit_normal = malloc(3 * (size_t)mesh->n_faces * sizeof(double));
+        if (!ctx->cell_bbox || !ctx->cell_is_box || !ctx->stamp || !ctx->face_unit_normal)
             st = cdc_fail(NULL, CDC_ERR_NOMEM, "mesh: out of memory for cell boxes");
         else
-            build_boxes(ctx);
+            st = build_boxes(ctx);
     }
     if (st == CDC_OK && cdc_wall_facets_from_mesh(ctx) != CDC_OK) {
         st = cdc_fail(NULL, CDC_ERR_NOMEM, "mesh: %s", ctx->msg);
@@ -229,6 +240,7 @@ void cdc_context_destroy(cdc_context *ctx)
     free(ctx->cell_cells);
     free(ctx->cell_bbox);
     free(ctx->cell_is_box);
+    free(ctx->face_unit_normal);
     free(ctx->facets);
     free(ctx->facet_offsets);
     free(ctx->facet_items);

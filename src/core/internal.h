@@ -73,6 +73,9 @@ struct cdc_context {
     /* per cell: axis-aligned bounding box (lo xyz, hi xyz) and whether the cell IS that box */
     double *cell_bbox;
     uint8_t *cell_is_box;
+    /* per face: unit normal (along the face area vector), for the point-location walk */
+    double *face_unit_normal;
+    int32_t walk_max_steps; /* cells a location walk may cross before the bins decide */
     double mesh_lo[3], mesh_hi[3];
     double total_volume;
 
@@ -124,6 +127,8 @@ typedef struct cdc_kernel_builder {
     cdc_ivec *cells;
     cdc_dvec *weights;
     int32_t fallback_cell; /* set by a method: the cell that takes the particle if no other does */
+    int distinct;          /* set by a method: no cell appended twice (the driver skips merging) */
+    struct cdc_candidates *search; /* the kernel set's candidate lists, for cdc_cells_within */
 } cdc_kernel_builder;
 
 int cdc_kernel_add(cdc_kernel_builder *b, int32_t cell, double w);
@@ -157,8 +162,26 @@ const cdc_method *cdc_find_method(const char *name);
 /* Cells whose centre lies within `radius` of x, found by flood fill from the start cell across
  * faces. The start cell is included too (the host of a particle), unless seed_only (a ghost's
  * start cell, included only if it qualifies). */
-cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t start, int seed_only, double radius,
+cdc_status cdc_flood_within(cdc_context *ctx, const double x[3], int32_t start, int seed_only, double radius,
                             cdc_ivec *cells);
+
+/* Per-cell candidate lists of a kernel set for its largest search radius (candidates.c). The driver
+ * sets `wanted` to the largest radius of a build; the lists are made on the first search that needs
+ * them. Lists beyond CDC_CANDIDATE_CAP entries in all are not made (the flood fill serves). */
+typedef struct cdc_candidates {
+    double radius;     /* radius the lists serve; 0: none made */
+    double wanted;     /* largest search radius of the current build */
+    double too_large;  /* a radius whose lists would exceed the cap (0: none found yet) */
+    int32_t *offsets, *cells;
+} cdc_candidates;
+#define CDC_CANDIDATE_CAP ((size_t)1 << 26) /* entries: 256 MB of int32 */
+void cdc_candidates_free(cdc_candidates *cand);
+
+/* The same cells as cdc_flood_within (see candidates.c for the one difference on distorted cells),
+ * by filtering the start cell's candidate list when x lies in the start cell's sphere and cand
+ * serves the radius; by flood fill otherwise (cand may be NULL). */
+cdc_status cdc_cells_within(cdc_context *ctx, cdc_candidates *cand, const double x[3], int32_t start,
+                            int seed_only, double radius, cdc_ivec *cells);
 
 /* The context's wall facets from its own mesh's wall faces (at creation; wall_facets.c). */
 cdc_status cdc_wall_facets_from_mesh(cdc_context *ctx);

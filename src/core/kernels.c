@@ -26,6 +26,7 @@ struct cdc_kernels {
     int32_t *slot_stamp;
     int32_t slot_now;
     cdc_ivec hosts;            /* host cell of each particle in the last build */
+    cdc_candidates cand;       /* per-cell candidate lists of the radius searches (candidates.c) */
     double seconds_locate, seconds_kernel; /* wall time of the last build's two passes */
     int64_t *outside_ids;      /* ids of the particles outside the mesh in the last build */
     int32_t n_outside;
@@ -79,6 +80,7 @@ void cdc_kernels_destroy(cdc_kernels *k)
     cdc_ivec_free(&k->fallback_pos);
     cdc_ivec_free(&k->raw_cells);
     cdc_dvec_free(&k->raw_weights);
+    cdc_candidates_free(&k->cand);
     free(k->slot);
     free(k->slot_stamp);
     free(k->outside_ids);
@@ -106,6 +108,7 @@ static cdc_status check_particles(cdc_kernels *k, const cdc_particles *p)
             return cdc_fail(ctx, CDC_ERR_PARTICLE, "particle %lld: radius %g is invalid (must be > 0)",
                             (long long)particle_id(p, i), r);
         const double reach = k->method->reach(&k->prm, r);
+        if (reach > k->cand.wanted) k->cand.wanted = reach;
         if (reach > diag)
             return cdc_fail(ctx, CDC_ERR_KERNEL,
                             "particle %lld: the %s kernel reaches %g m, more than the whole mesh (diagonal "
@@ -115,9 +118,24 @@ static cdc_status check_particles(cdc_kernels *k, const cdc_particles *p)
     return CDC_OK;
 }
 
-/* Merge the raw entries of one particle (same cell twice -> one entry); returns their sum. */
-static cdc_status append_merged(cdc_kernels *k, double *raw_sum)
+/* Merge the raw entries of one particle (same cell twice -> one entry); returns their sum.
+ * Entries a method made distinct are copied as they are. */
+static cdc_status append_merged(cdc_kernels *k, int distinct, double *raw_sum)
 {
+    if (distinct) {
+        const size_t n = k->raw_cells.n, at = k->cells.n;
+        if (cdc_ivec_reserve(&k->cells, at + n + 1) || cdc_dvec_reserve(&k->weights, at + n + 1))
+            return cdc_fail(k->ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
+        double sum = 0.0;
+        for (size_t q = 0; q < n; ++q) {
+            sum += k->raw_weights.v[q];
+            k->cells.v[at + q] = k->raw_cells.v[q];
+            k->weights.v[at + q] = k->raw_weights.v[q];
+        }
+        k->cells.n = k->weights.n = at + n;
+        *raw_sum = sum;
+        return CDC_OK;
+    }
     const int32_t s = ++k->slot_now;
     const size_t start = k->cells.n;
     double sum = 0.0;
@@ -146,11 +164,11 @@ static cdc_status no_weight(cdc_kernels *k, int64_t id)
 }
 
 /* Serial: merge, fall back to the method's fallback cell when nothing else got weight, normalise. */
-static cdc_status append_normalised(cdc_kernels *k, int64_t id, int32_t fallback)
+static cdc_status append_normalised(cdc_kernels *k, int64_t id, int distinct, int32_t fallback)
 {
     const size_t start = k->cells.n;
     double sum;
-    cdc_status st = append_merged(k, &sum);
+    cdc_status st = append_merged(k, distinct, &sum);
     if (st != CDC_OK) return st;
     if (!(sum > 0.0) && fallback >= 0) {
         k->cells.n = k->weights.n = start;
@@ -210,7 +228,7 @@ cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
     const double t1 = now_seconds();
 
     /* pass 2: kernels */
-    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights, -1};
+    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights, -1, 0, &k->cand};
     for (int32_t i = 0; i < p->n; ++i) {
         cdc_particle_in in = {{p->position[3 * (size_t)i], p->position[3 * (size_t)i + 1],
                                p->position[3 * (size_t)i + 2]},
@@ -222,8 +240,9 @@ cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
             k->raw_cells.n = 0;
             k->raw_weights.n = 0;
             b.fallback_cell = -1;
+            b.distinct = 0;
             st = k->method->build(ctx, &k->prm, &in, &b);
-            if (st == CDC_OK) st = append_normalised(k, particle_id(p, i), b.fallback_cell);
+            if (st == CDC_OK) st = append_normalised(k, particle_id(p, i), b.distinct, b.fallback_cell);
             if (st != CDC_OK) return st;
         }
         k->offsets.v[k->offsets.n++] = (int32_t)k->cells.n;
@@ -256,6 +275,8 @@ cdc_status cdc_kernels_build_raw(cdc_kernels *k, const cdc_particles *local, con
             if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2]) || !(r > 0.0) || !isfinite(r))
                 return cdc_fail(ctx, CDC_ERR_PARTICLE, "particle %lld: position (%g %g %g) or radius %g is invalid",
                                 (long long)particle_id(sets[s], i), x[0], x[1], x[2], r);
+            const double reach = k->method->reach(&k->prm, r);
+            if (reach > k->cand.wanted) k->cand.wanted = reach;
         }
     const int32_t n = local->n + ghosts->n;
     k->n = n;
@@ -281,7 +302,7 @@ cdc_status cdc_kernels_build_raw(cdc_kernels *k, const cdc_particles *local, con
     }
     const double t1 = now_seconds();
 
-    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights, -1};
+    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights, -1, 0, &k->cand};
     for (int32_t i = 0; i < n; ++i) {
         const int ghost = i >= local->n;
         const cdc_particles *p = ghost ? ghosts : local;
@@ -299,8 +320,9 @@ cdc_status cdc_kernels_build_raw(cdc_kernels *k, const cdc_particles *local, con
             k->raw_cells.n = 0;
             k->raw_weights.n = 0;
             b.fallback_cell = -1;
+            b.distinct = 0;
             cdc_status st = k->method->build(ctx, &k->prm, &in, &b);
-            if (st == CDC_OK) st = append_merged(k, &k->raw_sums.v[i]);
+            if (st == CDC_OK) st = append_merged(k, b.distinct, &k->raw_sums.v[i]);
             if (st != CDC_OK) return st;
             if (b.fallback_cell >= 0) { /* weight 0 unless no rank has anything else */
                 k->fallback_pos.v[i] = (int32_t)k->cells.n;

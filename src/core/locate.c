@@ -13,12 +13,11 @@
 #include <stdlib.h>
 
 /* Signed distance of p beyond face f's plane, seen from cell c (positive = outside c). */
-static double beyond(const cdc_mesh *m, int32_t c, int32_t f, const double p[3])
+static inline double beyond(const cdc_context *ctx, int32_t c, int32_t f, const double p[3])
 {
-    const double *S = m->face_areas + 3 * (size_t)f, *C = m->face_centres + 3 * (size_t)f;
-    const double mag = sqrt(S[0] * S[0] + S[1] * S[1] + S[2] * S[2]);
-    const double s = ((p[0] - C[0]) * S[0] + (p[1] - C[1]) * S[1] + (p[2] - C[2]) * S[2]) / mag;
-    return m->owner[f] == c ? s : -s;
+    const double *n = ctx->face_unit_normal + 3 * (size_t)f, *C = ctx->mesh->face_centres + 3 * (size_t)f;
+    const double s = (p[0] - C[0]) * n[0] + (p[1] - C[1]) * n[1] + (p[2] - C[2]) * n[2];
+    return ctx->mesh->owner[f] == c ? s : -s;
 }
 
 /* Tolerance for "on the face": a tiny fraction of the cell's size, so points on shared faces
@@ -31,13 +30,12 @@ static double cell_tolerance(const cdc_context *ctx, int32_t c)
 
 int cdc_point_in_cell(const cdc_context *ctx, int32_t c, const double p[3])
 {
-    const cdc_mesh *m = ctx->mesh;
     const double *bb = ctx->cell_bbox + 6 * (size_t)c;
     const double tol = cell_tolerance(ctx, c);
     for (int d = 0; d < 3; ++d)
         if (p[d] < bb[d] - tol || p[d] > bb[3 + d] + tol) return 0;
     for (int32_t q = ctx->cell_face_offsets[c]; q < ctx->cell_face_offsets[c + 1]; ++q)
-        if (beyond(m, c, ctx->cell_faces[q], p) > tol) return 0;
+        if (beyond(ctx, c, ctx->cell_faces[q], p) > tol) return 0;
     return 1;
 }
 
@@ -46,14 +44,13 @@ static int32_t walk(const cdc_context *ctx, int32_t start, const double p[3])
 {
     const cdc_mesh *m = ctx->mesh;
     int32_t c = start, prev = -1;
-    const int32_t max_steps = 4 * (int32_t)cbrt((double)m->n_cells) + 64;
-    for (int32_t step = 0; step < max_steps; ++step) {
+    for (int32_t step = 0; step < ctx->walk_max_steps; ++step) {
         const double tol = cell_tolerance(ctx, c);
         int32_t best_f = -1;
         double best = tol;
         for (int32_t q = ctx->cell_face_offsets[c]; q < ctx->cell_face_offsets[c + 1]; ++q) {
             const int32_t f = ctx->cell_faces[q];
-            const double s = beyond(m, c, f, p);
+            const double s = beyond(ctx, c, f, p);
             if (s > best) {
                 best = s;
                 best_f = f;

@@ -54,7 +54,7 @@ static cdc_status flood(cdc_context *ctx, const double x[3], int32_t host, int s
     return CDC_OK;
 }
 
-cdc_status cdc_cells_within(cdc_context *ctx, const double x[3], int32_t start, int seed_only, double radius,
+cdc_status cdc_flood_within(cdc_context *ctx, const double x[3], int32_t start, int seed_only, double radius,
                             cdc_ivec *cells)
 {
     return flood(ctx, x, start, seed_only, radius, CENTRE_WITHIN, cells);

@@ -3,6 +3,7 @@
  * Prints one PASS/FAIL line per test and ends with "N passed, N failed".
  */
 #include "../../src/core/coarse_dem.h"
+#include "../../src/core/internal.h" /* white-box: the candidate search against the flood fill */
 #include "../../src/core/tools/box_mesh.h"
 #include "check.h"
 
@@ -1437,6 +1438,75 @@ static void test_partly_outside(void)
     cube_case_close(&t);
 }
 
+/* ------------------------------------------------------------------ candidate lists */
+
+static int cmp_i32(const void *a, const void *b)
+{
+    const int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* The candidate-list filter (candidates.c) against the flood fill about the point itself: the same
+ * cells on a box mesh, never fewer on a sheared one; for points in their host cell and for
+ * ghost-like points (outside the start cell's sphere, where the flood fill still serves). */
+static void check_candidates(double shear)
+{
+    box_mesh b;
+    const double lo[3] = {0, 0, 0}, hi[3] = {1.2, 1.0, 0.8};
+    CHECK(box_mesh_create(&b, 12, 10, 8, lo, hi, ALL_WALLS, shear) == 0, "mesh");
+    cdc_context *ctx = NULL;
+    CHECK(cdc_context_create(&b.mesh, &ctx) == CDC_OK, "context: %s", cdc_create_error());
+    cdc_candidates cand = {0};
+    cand.wanted = 0.35;
+    cdc_ivec flood = {0}, filt = {0};
+    unsigned long long s = 11;
+    int differ = 0, fewer = 0, extra = 0, filtered = 0;
+    for (int t = 0; t < 3000; ++t) {
+        const double y = rnd(&s) * 1.0;
+        const double x[3] = {rnd(&s) * 1.2 + shear * y, y, rnd(&s) * 0.8};
+        int32_t host;
+        CHECK(cdc_locate_point(ctx, x, -1, &host) == CDC_OK, "locate");
+        if (host < 0) continue;
+        const int ghost = t % 5 == 0;
+        int32_t start = host;
+        if (ghost) start = ctx->cell_cell_offsets[host + 1] > ctx->cell_cell_offsets[host]
+                               ? ctx->cell_cells[ctx->cell_cell_offsets[host]] : host;
+        const double radius = 0.05 + 0.3 * rnd(&s);
+        CHECK(cdc_flood_within(ctx, x, start, ghost, radius, &flood) == CDC_OK, "flood");
+        size_t nf = flood.n;
+        int32_t *fv = malloc((nf + 1) * sizeof *fv);
+        memcpy(fv, flood.v, nf * sizeof *fv);
+        CHECK(cdc_cells_within(ctx, &cand, x, start, ghost, radius, &filt) == CDC_OK, "filter: %s",
+              cdc_last_error(ctx));
+        filtered += cand.radius > 0.0;
+        qsort(fv, nf, sizeof *fv, cmp_i32);
+        qsort(filt.v, filt.n, sizeof *filt.v, cmp_i32);
+        size_t i = 0, j = 0;
+        int missing = 0, more = 0;
+        while (i < nf || j < filt.n) {
+            if (j == filt.n || (i < nf && fv[i] < filt.v[j])) { ++missing; ++i; }
+            else if (i == nf || filt.v[j] < fv[i]) { ++more; ++j; }
+            else { ++i; ++j; }
+        }
+        differ += (missing || more);
+        fewer += missing > 0;
+        extra += more;
+        free(fv);
+    }
+    CHECK(cand.radius == 0.35 && filtered > 0, "lists made for 0.35, got %g", cand.radius);
+    CHECK(fewer == 0, "shear %g: the filter missed flood cells for %d points", shear, fewer);
+    if (shear == 0.0) CHECK(differ == 0, "box mesh: %d of the points got other cells than the flood fill", differ);
+    else printf("      (sheared mesh: %d rim cells more than the flood fill over 3000 searches)\n", extra);
+    cdc_ivec_free(&flood);
+    cdc_ivec_free(&filt);
+    cdc_candidates_free(&cand);
+    cdc_context_destroy(ctx);
+    box_mesh_destroy(&b);
+}
+
+static void test_candidates_box(void) { check_candidates(0.0); }
+static void test_candidates_sheared(void) { check_candidates(0.5); }
+
 static void test_method_registry(void)
 {
     /* the list in messages names every registered method */
@@ -1477,6 +1547,8 @@ int main(void)
     run("parallel_matches_serial", test_parallel_matches_serial);
     run("bad_input", test_bad_input);
     run("partly_outside", test_partly_outside);
+    run("candidates_box", test_candidates_box);
+    run("candidates_sheared", test_candidates_sheared);
     run("method_registry", test_method_registry);
     printf("%d passed, %d failed\n", n_pass, n_fail);
     return n_fail ? 1 : 0;

@@ -13,13 +13,12 @@
  */
 #include "radial.h"
 
-cdc_status cdc_radial_kernel(cdc_context *ctx, const cdc_particle_in *p, double radius, int wall_mirror,
-                             double (*profile)(double d2, const void *arg), const void *arg,
-                             cdc_kernel_builder *out)
+cdc_status cdc_radial_neighbourhood(cdc_context *ctx, const cdc_particle_in *p, double radius, int wall_mirror,
+                                    cdc_candidates *search, double images[][3], int *n_images)
 {
     cdc_plane planes[CDC_MAX_WALL_FACETS];
     int n_planes = 0;
-    cdc_status st = cdc_cells_within(ctx, p->x, p->host, p->ghost, radius, &ctx->near_cells);
+    cdc_status st = cdc_cells_within(ctx, search, p->x, p->host, p->ghost, radius, &ctx->near_cells);
     if (st == CDC_OK && wall_mirror) st = cdc_wall_planes_near(ctx, p->x, radius, planes, &n_planes);
     if (st != CDC_OK) return st;
     n_planes = cdc_nearest_wall_planes(p->x, planes, n_planes);
@@ -27,29 +26,10 @@ cdc_status cdc_radial_kernel(cdc_context *ctx, const cdc_particle_in *p, double 
         return cdc_fail(ctx, CDC_ERR_UNSUPPORTED,
                         "wallMirror: more than %d walls meeting at sharp angles within %g m of the particle at "
                         "(%g %g %g)", CDC_MAX_PLANES, radius, p->x[0], p->x[1], p->x[2]);
-
-    double images[CDC_MAX_IMAGES][3];
-    const int n_images = cdc_mirror_images(p->x, planes, n_planes, radius, images);
-    if (n_images < 0)
+    *n_images = cdc_mirror_images(p->x, planes, n_planes, radius, images);
+    if (*n_images < 0)
         return cdc_fail(ctx, CDC_ERR_UNSUPPORTED,
                         "wallMirror: more than %d mirror images of the particle at (%g %g %g) within %g m "
                         "(a domain thinner than the kernel)", CDC_MAX_IMAGES, p->x[0], p->x[1], p->x[2], radius);
-    const cdc_mesh *m = ctx->mesh;
-    int added = 0;
-    for (size_t q = 0; q < ctx->near_cells.n; ++q) {
-        const int32_t c = ctx->near_cells.v[q];
-        const double *xc = m->cell_centres + 3 * (size_t)c;
-        double w = 0.0;
-        for (int k = 0; k < n_images; ++k) w += profile(cdc_dist2(xc, images[k]), arg);
-        if (w <= 0.0) continue;
-        if (cdc_kernel_add(out, c, w * m->cell_volumes[c]))
-            return cdc_fail(ctx, CDC_ERR_NOMEM, "kernel: out of memory");
-        ++added;
-    }
-    /* No cell centre inside the search sphere (a particle much smaller than its cell): the
-     * kernel falls back to the particle centroid method. In parallel this is decided when the
-     * ranks' sums are known, so the method only names the cell. */
-    (void)added;
-    if (!p->ghost) out->fallback_cell = p->host;
     return CDC_OK;
 }
