@@ -2,9 +2,10 @@
 """Unit checks of the Mueller validation scripts' bookkeeping of stopped and continued runs:
 profiles.drop_superseded (samples of a stopped segment re-sampled by its continuation) and
 summary.log_segments (wall seconds per start, cut where the continuation started, MPI ranks), and
-summary.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs).
+summary.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs), and
+window.py on a synthetic run (errors per averaging window against ones computed here, its refusals).
 Prints PASS/FAIL per check and "N passed, N failed"."""
-import importlib.util, os, sys, tempfile, time
+import csv, importlib.util, math, os, random, subprocess, sys, tempfile, time
 
 top = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 def load(name):
@@ -87,6 +88,109 @@ with tempfile.TemporaryDirectory() as tmp:
         n, made, err = 0, False, repr(e)
     check(n == 5 and made, "profiles figure: %d panels for two inlet velocities (expected 5), PNG %s%s"
           % (n, "written" if made else "missing", (": " + err) if err else ""))
+
+with tempfile.TemporaryDirectory() as tmp:
+    # window.py on a synthetic run: samples every 0.01 s (i = 1..50 complete, a 51st being written:
+    # one file of its directory), a constant profile plus noise, two columns across the thickness
+    # (depthProfiles) and the mid-thickness alpha (profiles, complete up to i = 51)
+    rng = random.Random(18)
+    ys = [0.002 + 0.004 * j for j in range(11)]
+    heights = ("15", "16.4")
+    aP, aU, alpha = {}, {}, {}   # [(i, h, d)] / [(i, h)] -> values along y
+    run = os.path.join(tmp, "synth_dx1_U0.9_test")
+    def write(path, header, cols):
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w") as f:
+            f.write(",".join(header) + "\n")
+            for row in zip(ys, *cols):
+                f.write(",".join(repr(v) for v in row) + "\n")
+    for i in range(1, 52):
+        t = "%g" % (i / 100)
+        for h in heights:
+            for d in (0, 1):
+                aP[i, h, d] = [0.45 + 0.1 * y / 0.044 + rng.uniform(-0.08, 0.08) for y in ys]
+                aU[i, h, d] = [a * (-0.1 + 0.2 * y / 0.044 + rng.uniform(-0.3, 0.3)) for a, y in zip(aP[i, h, d], ys)]
+                base = os.path.join(run, "postProcessing", "depthProfiles", t, "z%sd%d" % (h, d))
+                if i <= 50 or (h, d) == ("15", 0):
+                    write(base + "_alpha_alphaPBinned.csv", ("y", "alpha", "alphaPBinned"), ([1 - a for a in aP[i, h, d]], aP[i, h, d]))
+                if i <= 50:
+                    write(base + "_alphaPUsBinned.csv", ("y", "alphaPUsBinned_0", "alphaPUsBinned_1", "alphaPUsBinned_2"),
+                          ([0.0] * len(ys), [0.0] * len(ys), aU[i, h, d]))
+            alpha[i, h] = [0.5 - 0.1 * y / 0.044 + rng.uniform(-0.1, 0.1) for y in ys]
+            write(os.path.join(run, "postProcessing", "profiles", t, "z%s_alpha.csv" % h), ("y", "alpha"), (alpha[i, h],))
+    data = os.path.join(tmp, "data")
+    os.makedirs(data)
+    mr = {}   # (data quantity, height) -> (x, value)
+    for q, h in (("voidfraction", "15"), ("voidfraction", "16.4"), ("vz", "15")):
+        xs = [0.0009, 0.0071, 0.0143, 0.0222, 0.0301, 0.0388, 0.0431]
+        vals = [rng.uniform(0.4, 0.6) if q == "voidfraction" else rng.uniform(-0.2, 0.2) for _ in xs]
+        mr[q, h] = (xs, vals)
+        with open(os.path.join(data, "mueller_U0.9_%s_z%smm_MR.csv" % (q, h)), "w") as f:
+            f.write("# synthetic\nx_m,%s\n" % q + "".join("%r,%r\n" % xv for xv in zip(xs, vals)))
+    script = os.path.join(top, "validation", "muller", "window.py")
+    def window(*args):
+        return subprocess.run([sys.executable, script] + list(args), cwd=tmp, capture_output=True, text=True)
+    out = os.path.join(tmp, "wout")
+    r = window(run, "-tstart", "0.02", "-step", "0.07", "-U", "0.9", "-data", data, "-o", out)
+    rows = list(csv.DictReader(open(os.path.join(out, "window.csv")))) if r.returncode == 0 else []
+    check(r.returncode == 0 and os.path.exists(os.path.join(out, "window.png")) and rows and
+          list(rows[0]) == ["run", "window_s", "quantity", "z_mm", "rms", "max", "n_samples"],
+          "window.py on a synthetic run: exit %d, window.csv and window.png written%s"
+          % (r.returncode, "" if r.returncode == 0 else ": " + r.stderr.strip()))
+
+    # expected, computed here: window k holds the samples i = 3 .. 2 + 7k (0.02 < t <= 0.02 + 0.07k);
+    # profiles.py averages the first B * (n // B) of its n samples, B = min(10, n // 5) (at least 1);
+    # the profile files hold 6 significant digits; the simulation is interpolated linearly to the
+    # data's x (held constant beyond its ends)
+    def interp(x, xs, vs):
+        if x <= xs[0]:
+            return vs[0]
+        for a, b, va, vb in zip(xs, xs[1:], vs, vs[1:]):
+            if x <= b:
+                return va + (x - a) / (b - a) * (vb - va)
+        return vs[-1]
+    six = lambda v: float("%.6g" % v)
+    expected = {}
+    for k in range(1, 7):
+        n = 7 * k
+        B = max(1, min(10, n // 5))
+        used = list(range(3, 3 + B * (n // B)))
+        for h in heights:
+            depth_aP = [[(aP[i, h, 0][j] + aP[i, h, 1][j]) / 2 for j in range(len(ys))] for i in used]
+            depth_aU = [[(aU[i, h, 0][j] + aU[i, h, 1][j]) / 2 for j in range(len(ys))] for i in used]
+            prof = {"void_fraction_depth_binned": [1 - sum(a[j] for a in depth_aP) / len(used) for j in range(len(ys))],
+                    "void_fraction_depth": [1 - sum(a[j] for a in depth_aP) / len(used) for j in range(len(ys))],
+                    "void_fraction": [sum(alpha[i, h][j] for i in used) / len(used) for j in range(len(ys))],
+                    "vz_particle_depth_binned_m_per_s": [sum(u[j] for u in depth_aU) / sum(a[j] for a in depth_aP)
+                                                         for j in range(len(ys))]}
+            for quantity, sim in prof.items():
+                q = "vz" if quantity.startswith("vz") else "voidfraction"
+                if (q, h) not in mr:
+                    continue
+                xs, vals = mr[q, h]
+                err = [interp(x, ys, [six(v) for v in sim]) - v for x, v in zip(xs, vals)]
+                expected[round(0.07 * k, 9), quantity, h] = (math.sqrt(sum(e * e for e in err) / len(err)),
+                                                             max(abs(e) for e in err), len(used))
+    got = {(round(float(r["window_s"]), 9), r["quantity"], r["z_mm"]): (float(r["rms"]), float(r["max"]), int(r["n_samples"]))
+           for r in rows if r["run"] == "synth_dx1_U0.9_test"}
+    windows = sorted(set(w for w, _, _ in got))
+    check(windows == [round(0.07 * k, 9) for k in range(1, 7)] and len(rows) == len(got),
+          "window.py: windows of 0.07 s after 0.02 up to the last whole sample, the one being written left out: %s" % windows)
+    worst = max((abs(got[key][m] - expected[key][m]) for key in expected if key in got for m in (0, 1)), default=float("inf"))
+    check(set(got) == set(expected) and worst < 1e-9 and all(got[key][2] == expected[key][2] for key in expected),
+          "window.py: RMS and max error of every window, quantity and height as computed here (%d rows, worst "
+          "difference %.2g, samples per window %s)" % (len(got), worst,
+                                                         sorted(set((w, n) for (w, q, h), (_, _, n) in got.items()))))
+
+    # refusals: exit status 2 and one line naming the run or the argument
+    os.makedirs(os.path.join(tmp, "empty_run", "postProcessing"))
+    for args, word, what in (((os.path.join(tmp, "empty_run"), "-tstart", "0"), "empty_run", "a run without samples"),
+                             ((run, "-tstart", "0.6"), "-tstart 0.6", "a tstart beyond the last sample"),
+                             ((run, "-tstart", "0.02", "-U", "0.7"), "-U 0.7", "an inlet velocity without data")):
+        r = window(*(args + ("-data", data, "-o", out)))
+        msg = r.stderr.strip()
+        check(r.returncode == 2 and word in msg and "\n" not in msg,
+              "window.py refuses %s: exit %d, %r" % (what, r.returncode, msg))
 
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)
