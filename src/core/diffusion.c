@@ -7,7 +7,11 @@
  * T = b^2/4 so that, with D = 1, a point source spreads like the Gaussian kernel exp(-r^2/b^2).
  * Finite volumes, two-point flux a_f (phi_N - phi_P) with a_f = D_f |S_f| / |C_N - C_P| (no
  * non-orthogonal correction: exact on orthogonal meshes, conservative on any mesh). Implicit Euler
- * in n_steps equal steps, each solved by Jacobi-preconditioned conjugate gradients.
+ * in n_steps equal steps, each solved by conjugate gradients preconditioned with the incomplete
+ * Cholesky factorisation without fill-in (DIC, Meijerink & van der Vorst 1977; OpenFOAM's DIC) when
+ * the internal faces come in upper-triangular order (owner < neighbour, owners ascending: every
+ * OpenFOAM mesh), else with the diagonal (Jacobi). The matrix does not change between couplings on a
+ * fixed mesh; at b = 6 cells DIC needs about half of Jacobi's iterations.
  *
  * Conservation to round-off whatever the solver tolerance: the step's final value is written in
  * flux form, phi_new = phi_old + dtau/V * sum_f a_f (phi*_N - phi*_P), where phi* is the CG
@@ -16,7 +20,8 @@
  * Parallel: the core sees one rank's mesh. Without a halo (cdc_context_set_halo) processor faces
  * are zero-flux; with one, each processor face carries the same two-point flux with the neighbour
  * rank's value from the caller's exchange, and the CG's dot products are summed over the ranks, so
- * the ranks solve the serial system together. Both sides of a processor face compute the same flux
+ * the ranks solve the serial system together (the preconditioner is each rank's own, without the
+ * processor faces, as in OpenFOAM: it changes the iterates, not the system solved). Both sides of a processor face compute the same flux
  * from the same exchanged values (given the same coefficient on both sides, which the caller
  * ensures), so the flux-form update conserves the total over all ranks. The global sums must give
  * every rank the same bits: the CG's stopping test, and so the number of collective exchanges,
@@ -72,6 +77,28 @@ static cdc_status global_sum(cdc_context *ctx, double *values, int n)
     return CDC_OK;
 }
 
+/* Can the faces carry DIC's sweeps (owner < neighbour, owners ascending)? */
+static int upper_triangular(const cdc_mesh *m)
+{
+    for (int32_t f = 0; f < m->n_internal_faces; ++f)
+        if (m->owner[f] >= m->neighbour[f] || (f > 0 && m->owner[f] < m->owner[f - 1])) return 0;
+    return 1;
+}
+
+/* z = M^-1 r: DIC (rD holds the reciprocal of the factor's diagonal) or Jacobi (rD = 1/diag).
+ * DIC: M = (D + L) D^-1 (D + U), L and U the matrix's off-diagonal parts (-a_f), solved by a forward
+ * sweep over the faces in order and a backward sweep in reverse. */
+static void precondition(const cdc_mesh *m, int dic, const double *a, const double *rD, const double *r,
+                         double *z)
+{
+    const size_t nc = (size_t)m->n_cells;
+    for (size_t c = 0; c < nc; ++c) z[c] = rD[c] * r[c];
+    if (!dic) return;
+    const int32_t ni = m->n_internal_faces;
+    for (int32_t f = 0; f < ni; ++f) z[m->neighbour[f]] += rD[m->neighbour[f]] * a[f] * z[m->owner[f]];
+    for (int32_t f = ni - 1; f >= 0; --f) z[m->owner[f]] += rD[m->owner[f]] * a[f] * z[m->neighbour[f]];
+}
+
 /* D at a face: 1, or with the D rule the harmonic mean of the cells' D (0.001 in cells larger than 4 d) */
 static double face_diffusivity(const cdc_diffusion_params *prm, double volume_p, double volume_n)
 {
@@ -95,13 +122,13 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
 
     const cdc_mesh *m = ctx->mesh;
     const size_t nc = (size_t)m->n_cells, ni = (size_t)m->n_internal_faces;
-    /* scratch 0..5 per cell, 6 per internal face */
-    _Static_assert(CDC_N_SCRATCH >= 7, "diffusion uses scratch vectors 0..6");
-    for (int k = 0; k < 7; ++k)
+    /* scratch 0..5 and 7 per cell, 6 per internal face */
+    _Static_assert(CDC_N_SCRATCH >= 8, "diffusion uses scratch vectors 0..7");
+    for (int k = 0; k < 8; ++k)
         if (cdc_dvec_reserve(&ctx->scratch[k], k == 6 ? (ni > 0 ? ni : 1) : nc))
             return cdc_fail(ctx, CDC_ERR_NOMEM, "diffusion: out of memory");
     double *x = ctx->scratch[0].v, *y = ctx->scratch[1].v, *r = ctx->scratch[2].v, *p = ctx->scratch[3].v,
-           *q = ctx->scratch[4].v, *diag = ctx->scratch[5].v, *a = ctx->scratch[6].v;
+           *q = ctx->scratch[4].v, *diag = ctx->scratch[5].v, *a = ctx->scratch[6].v, *z = ctx->scratch[7].v;
 
     /* Face coefficients times D_f. The seed's D rule: D = 0.001 in cells larger than 4 d, so that
      * smoothing degenerates to the centroid method there; the face value is the harmonic mean. */
@@ -123,6 +150,15 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
         diag[m->neighbour[f]] += a[f];
     }
     for (int32_t i = 0; h && i < h->n_faces; ++i) diag[h->cell[i]] += ctx->halo_coeff.v[i];
+    /* the preconditioner's reciprocal diagonal: DIC's factor, or Jacobi's */
+    const int dic = upper_triangular(m);
+    double *rD = diag; /* the diagonal itself is no longer needed once rD is formed */
+    if (dic)
+        for (size_t f = 0; f < ni; ++f) {
+            const int32_t o = m->owner[f];
+            rD[m->neighbour[f]] -= a[f] * a[f] / rD[o]; /* rD[o] is final: its faces to lower cells came first */
+        }
+    for (size_t c = 0; c < nc; ++c) rD[c] = 1.0 / rD[c];
 
     /* Work on x so phi is untouched if a solve fails. */
     memcpy(x, phi, nc * sizeof *x);
@@ -131,11 +167,11 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
         memcpy(y, x, nc * sizeof *y);
         if ((st = laplacian(ctx, a, y, r)) != CDC_OK) return st;
         double norms[3] = {0.0, 0.0, 0.0}; /* |b|^2, |r|^2, r.z */
+        precondition(m, dic, a, rD, r, p);
         for (size_t c = 0; c < nc; ++c) {
             const double b = m->cell_volumes[c] / dtau * x[c];
             norms[0] += b * b;
             norms[1] += r[c] * r[c];
-            p[c] = r[c] / diag[c];
             norms[2] += r[c] * p[c];
         }
         if ((st = global_sum(ctx, norms, 3)) != CDC_OK) return st;
@@ -159,14 +195,17 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
             for (size_t c = 0; c < nc; ++c) {
                 y[c] += alpha * p[c];
                 r[c] -= alpha * q[c];
+            }
+            precondition(m, dic, a, rD, r, z);
+            for (size_t c = 0; c < nc; ++c) {
                 sums[0] += r[c] * r[c];
-                sums[1] += r[c] * r[c] / diag[c];
+                sums[1] += r[c] * z[c];
             }
             if ((st = global_sum(ctx, sums, 2)) != CDC_OK) return st;
             rnorm = sums[0];
             const double beta = sums[1] / rz;
             rz = sums[1];
-            for (size_t c = 0; c < nc; ++c) p[c] = r[c] / diag[c] + beta * p[c];
+            for (size_t c = 0; c < nc; ++c) p[c] = z[c] + beta * p[c];
         }
         /* Flux-form update from the implicit solution: conserves sum(x V) exactly. */
         if ((st = laplacian(ctx, a, y, q)) != CDC_OK) return st;

@@ -694,9 +694,12 @@ static void test_mirror_symmetry(void)
         CHECK(cdc_kernels_build(k, &p) == CDC_OK && cdc_alpha_p(k, &p, alpha) == CDC_OK, "%s: %s",
               cases[m].method, cdc_last_error(t.ctx));
         for (int pass = 0; pass < 2; ++pass) {
-            if (pass == 1) { /* diffusion smoothing on top, b = 6 d */
+            if (pass == 1) { /* diffusion smoothing on top, b = 6 d; the exact solution is symmetric,
+                              * the DIC-preconditioned iterates are not: solved to 1e-13 so the check
+                              * sees the solution, not the iteration's remainder */
                 cdc_diffusion_params dp = {0};
                 dp.bandwidth = 6 * dx;
+                dp.tolerance = 1e-13;
                 CHECK(cdc_diffuse(t.ctx, &dp, alpha) == CDC_OK, "diffuse: %s", cdc_last_error(t.ctx));
             }
             double worst = 0, top = 0;

@@ -86,6 +86,8 @@ check bandwidth_le_0 's/^voidFractionModel .*/voidFractionModel gaussian;/; s/ga
     "gaussian: bandwidth -0.001 is invalid (must be > 0)"
 check diffusion_bandwidth_0 's/^smoothingModel .*/smoothingModel diffusion;/; s/diffusionProps .*/diffusionProps { bandwidth 0; }/' \
     "diffusionProps is invalid: must be > 0"
+check diffusion_tolerance_1 's/^smoothingModel .*/smoothingModel diffusion;/; s/diffusionProps .*/diffusionProps { bandwidth 6e-3; tolerance 1; }/' \
+    "diffusionProps is invalid: must be > 0 and < 1"
 check alphaMin_1.5 's/^alphaMin .*/alphaMin 1.5;/' "entry alphaMin 1.5"
 check alphaMin_0 's/^alphaMin .*/alphaMin 0;/' "must be in (0, 1)"
 check couplingInterval_0 's/^couplingInterval .*/couplingInterval 0;/' "entry couplingInterval 0"

@@ -129,9 +129,10 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
     {
         smoothing_ = smoothing::diffusion;
         const dictionary& d = dict.subDict("diffusionProps");
-        checkPropsKeys(d, {"bandwidth", "nSteps", "DRule", "particleDiameter", "smoothExchangeFields"});
+        checkPropsKeys(d, {"bandwidth", "nSteps", "tolerance", "DRule", "particleDiameter", "smoothExchangeFields"});
         diffusion_.bandwidth = d.get<scalar>("bandwidth");
         diffusion_.n_steps = d.lookupOrDefault<label>("nSteps", 4);
+        diffusion_.tolerance = d.lookupOrDefault<scalar>("tolerance", 1e-10);
         diffusion_.d_rule = d.lookupOrDefault<Switch>("DRule", false) ? 1 : 0;
         diffusion_.particle_diameter = d.lookupOrDefault<scalar>("particleDiameter", 0);
         smoothExchange_ = d.lookupOrDefault<Switch>("smoothExchangeFields", false);
@@ -140,6 +141,13 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
             FatalIOErrorInFunction(dict)
                 << "entry bandwidth " << diffusion_.bandwidth << " in " << dict.name()
                 << "/diffusionProps is invalid: must be > 0 (metres; b = 6 d is recommended)"
+                << exit(FatalIOError);
+        }
+        if (!(diffusion_.tolerance > 0 && diffusion_.tolerance < 1))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry tolerance " << diffusion_.tolerance << " in " << dict.name()
+                << "/diffusionProps is invalid: must be > 0 and < 1 (the CG solves' relative residual)"
                 << exit(FatalIOError);
         }
     }
