@@ -21,33 +21,59 @@ void coarseDemCoupling::sampleFluid
 {
     const cdc_kernels* k = backgroundKernels_ ? backgroundKernels_ : voidFraction_.kernels();
     const label n = state_.n;
-    auto gatherVector = [&](const vectorField& field, vectorField& out)
+    // Every field the forces need, gathered in one pass over the kernels and one halo exchange:
+    // the fields side by side in one array of cells (each component's sum over a kernel is the
+    // same as gathered alone).
+    struct sampled { const double* cells; int ncomp; double* particles; };
+    std::vector<sampled> fields;
+    auto addVector = [&](const vectorField& field, vectorField& out)
     {
         out.setSize(n);
-        gather(k, reinterpret_cast<const double*>(field.cdata()), 3, reinterpret_cast<double*>(out.data()));
+        fields.push_back({reinterpret_cast<const double*>(field.cdata()), 3, reinterpret_cast<double*>(out.data())});
     };
-    gatherVector(U.primitiveField(), state_.Uf);
+    addVector(U.primitiveField(), state_.Uf);
     state_.alphaf.setSize(n);
-    gather(k, alpha.primitiveField().cdata(), 1, state_.alphaf.data());
+    fields.push_back({alpha.primitiveField().cdata(), 1, state_.alphaf.data()});
+    tmp<volVectorField> gradP, divTau, vorticity;
     if (needs_ & forceModel::needGradP)
     {
-        gatherVector(fvc::grad(p)().primitiveField(), state_.gradP);
+        gradP = fvc::grad(p);
+        addVector(gradP().primitiveField(), state_.gradP);
     }
     if (needs_ & forceModel::needDivTau)
     {
-        const volVectorField divTau
-        (
-            fvc::laplacian(nuEff, U) + fvc::div(nuEff*noAliasFvc::dev2GradUT(U))
-        );
-        gatherVector(divTau.primitiveField(), state_.divTau);
+        divTau = fvc::laplacian(nuEff, U) + fvc::div(nuEff*noAliasFvc::dev2GradUT(U));
+        addVector(divTau().primitiveField(), state_.divTau);
     }
     if ((needs_ & forceModel::needDUfDt) && DUDt)
     {
-        gatherVector(DUDt->primitiveField(), state_.DUfDt);
+        addVector(DUDt->primitiveField(), state_.DUfDt);
     }
     if (needs_ & forceModel::needVorticity)
     {
-        gatherVector(noAliasFvc::curl(U)().primitiveField(), state_.vorticity);
+        vorticity = noAliasFvc::curl(U);
+        addVector(vorticity().primitiveField(), state_.vorticity);
+    }
+
+    int width = 0;
+    for (const sampled& f : fields) width += f.ncomp;
+    const label nCells = mesh_.nCells();
+    packedCells_.resize(size_t(nCells)*width);
+    int at = 0;
+    for (const sampled& f : fields)
+    {
+        for (label c = 0; c < nCells; ++c)
+            for (int d = 0; d < f.ncomp; ++d) packedCells_[size_t(c)*width + at + d] = f.cells[size_t(c)*f.ncomp + d];
+        at += f.ncomp;
+    }
+    packedParticles_.resize(size_t(n)*width);
+    gather(k, packedCells_.data(), width, packedParticles_.data());
+    at = 0;
+    for (const sampled& f : fields)
+    {
+        for (label i = 0; i < n; ++i)
+            for (int d = 0; d < f.ncomp; ++d) f.particles[size_t(i)*f.ncomp + d] = packedParticles_[size_t(i)*width + at + d];
+        at += f.ncomp;
     }
 }
 
