@@ -89,8 +89,10 @@ void cdc_kernels_destroy(cdc_kernels *k)
 
 static int64_t particle_id(const cdc_particles *p, int32_t i) { return p->id ? p->id[i] : (int64_t)i; }
 
-/* Everything that can be said about the input before touching any output. */
-static cdc_status check_particles(cdc_kernels *k, const cdc_particles *p)
+/* Everything that can be said about one particle set before touching any output. The largest
+ * reach is noted for the candidate lists. A kernel larger than the whole mesh is an error in serial
+ * (whole_mesh); one rank's part of a mesh may be smaller than a kernel. */
+static cdc_status check_particles(cdc_kernels *k, const cdc_particles *p, int whole_mesh)
 {
     cdc_context *ctx = k->ctx;
     if (!p || p->n < 0 || (p->n > 0 && (!p->position || !p->radius)))
@@ -109,7 +111,7 @@ static cdc_status check_particles(cdc_kernels *k, const cdc_particles *p)
                             (long long)particle_id(p, i), r);
         const double reach = k->method->reach(&k->prm, r);
         if (reach > k->cand.wanted) k->cand.wanted = reach;
-        if (reach > diag)
+        if (whole_mesh && reach > diag)
             return cdc_fail(ctx, CDC_ERR_KERNEL,
                             "particle %lld: the %s kernel reaches %g m, more than the whole mesh (diagonal "
                             "%g m); reduce the expansion factor or bandwidth",
@@ -202,142 +204,103 @@ static double now_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
+/* The one kernel-build loop, serial and parallel. Serial (no ghosts): every kernel is whole on this
+ * mesh and is normalised as it is made. Parallel: the local particles and the ghosts get raw
+ * (merged, unnormalised) kernels over this rank's cells, their sums for the caller to add across
+ * the ranks, and their fallback cell as an entry of weight 0 (cdc_kernels_normalise). */
+static cdc_status build(cdc_kernels *k, const cdc_particles *local, const cdc_particles *ghosts)
 {
-    if (!k) return CDC_ERR_ARGUMENT;
-    cdc_status st = check_particles(k, p);
+    cdc_context *ctx = k->ctx;
+    const int whole = ghosts == NULL;
+    cdc_status st = check_particles(k, local, whole);
+    if (st == CDC_OK && !whole) st = check_particles(k, ghosts, 0);
     if (st != CDC_OK) return st;
-    cdc_context *ctx = k->ctx;
-
-    k->n = p->n;
-    k->offsets.n = 1;
-    k->cells.n = 0;
-    k->weights.n = 0;
-    k->n_outside = 0;
-    if (cdc_ivec_reserve(&k->offsets, (size_t)p->n + 1) || cdc_ivec_reserve(&k->hosts, (size_t)p->n + 1))
-        return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
-
-    /* pass 1: host cells (timed apart from the kernels, for the solver's stage timers) */
-    const double t0 = now_seconds();
-    for (int32_t i = 0; i < p->n; ++i) {
-        const int32_t hint = p->host_hint ? p->host_hint[i] : -1;
-        st = cdc_locate_point(ctx, p->position + 3 * (size_t)i, hint, &k->hosts.v[i]);
-        if (st != CDC_OK) return st;
-        if (p->host_hint) p->host_hint[i] = k->hosts.v[i];
-    }
-    const double t1 = now_seconds();
-
-    /* pass 2: kernels */
-    cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights, -1, 0, &k->cand};
-    for (int32_t i = 0; i < p->n; ++i) {
-        cdc_particle_in in = {{p->position[3 * (size_t)i], p->position[3 * (size_t)i + 1],
-                               p->position[3 * (size_t)i + 2]},
-                              p->radius[i], k->hosts.v[i], 0};
-        if (in.host < 0) {
-            st = record_outside(k, particle_id(p, i));
-            if (st != CDC_OK) return st;
-        } else {
-            k->raw_cells.n = 0;
-            k->raw_weights.n = 0;
-            b.fallback_cell = -1;
-            b.distinct = 0;
-            st = k->method->build(ctx, &k->prm, &in, &b);
-            if (st == CDC_OK) st = append_normalised(k, particle_id(p, i), b.distinct, b.fallback_cell);
-            if (st != CDC_OK) return st;
-        }
-        k->offsets.v[k->offsets.n++] = (int32_t)k->cells.n;
-    }
-    k->n_local = k->n;
-    k->seconds_locate = t1 - t0;
-    k->seconds_kernel = now_seconds() - t1;
-    if (k->n_outside > 0) {
-        char list[256] = "";
-        size_t used = 0;
-        for (int32_t j = 0; j < k->n_outside && j < 10 && used < sizeof list - 24; ++j)
-            used += (size_t)snprintf(list + used, sizeof list - used, "%s%lld", j ? " " : "",
-                                     (long long)k->outside_ids[j]);
-        return cdc_fail(ctx, CDC_ERR_OUTSIDE, "%d particle(s) outside the mesh, ids: %s%s", (int)k->n_outside,
-                        list, k->n_outside > 10 ? " ..." : "");
-    }
-    return CDC_OK;
-}
-
-cdc_status cdc_kernels_build_raw(cdc_kernels *k, const cdc_particles *local, const cdc_particles *ghosts)
-{
-    if (!k || !local || !ghosts) return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT, "cdc_kernels_build_raw: NULL argument");
-    cdc_context *ctx = k->ctx;
-    /* validity of both sets first: nothing is written on bad input */
-    const cdc_particles *sets[2] = {local, ghosts};
-    for (int s = 0; s < 2; ++s)
-        for (int32_t i = 0; i < sets[s]->n; ++i) {
-            const double *x = sets[s]->position + 3 * (size_t)i;
-            const double r = sets[s]->radius[i];
-            if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2]) || !(r > 0.0) || !isfinite(r))
-                return cdc_fail(ctx, CDC_ERR_PARTICLE, "particle %lld: position (%g %g %g) or radius %g is invalid",
-                                (long long)particle_id(sets[s], i), x[0], x[1], x[2], r);
-            const double reach = k->method->reach(&k->prm, r);
-            if (reach > k->cand.wanted) k->cand.wanted = reach;
-        }
-    const int32_t n = local->n + ghosts->n;
+    const int32_t n = local->n + (whole ? 0 : ghosts->n);
     k->n = n;
     k->n_local = local->n;
     k->offsets.n = 1;
     k->cells.n = k->weights.n = 0;
     k->n_outside = 0;
     if (cdc_ivec_reserve(&k->offsets, (size_t)n + 1) || cdc_ivec_reserve(&k->hosts, (size_t)n + 1) ||
-        cdc_dvec_reserve(&k->raw_sums, (size_t)n + 1) || cdc_ivec_reserve(&k->fallback_pos, (size_t)n + 1))
+        (!whole && (cdc_dvec_reserve(&k->raw_sums, (size_t)n + 1) || cdc_ivec_reserve(&k->fallback_pos, (size_t)n + 1))))
         return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
 
+    /* pass 1: host cells (timed apart from the kernels, for the solver's stage timers); a ghost's
+     * centre is not in this mesh: its searches start from the nearest cell within its reach */
     const double t0 = now_seconds();
     for (int32_t i = 0; i < local->n; ++i) {
         const int32_t hint = local->host_hint ? local->host_hint[i] : -1;
-        cdc_status st = cdc_locate_point(ctx, local->position + 3 * (size_t)i, hint, &k->hosts.v[i]);
+        st = cdc_locate_point(ctx, local->position + 3 * (size_t)i, hint, &k->hosts.v[i]);
         if (st != CDC_OK) return st;
         if (local->host_hint) local->host_hint[i] = k->hosts.v[i];
     }
-    for (int32_t g = 0; g < ghosts->n; ++g) {
+    for (int32_t g = 0; g < n - local->n; ++g) {
         const double reach = k->method->reach(&k->prm, ghosts->radius[g]) + ghosts->radius[g];
-        cdc_status st = cdc_nearest_cell(ctx, ghosts->position + 3 * (size_t)g, reach, &k->hosts.v[local->n + g]);
+        st = cdc_nearest_cell(ctx, ghosts->position + 3 * (size_t)g, reach, &k->hosts.v[local->n + g]);
         if (st != CDC_OK) return st;
     }
     const double t1 = now_seconds();
 
+    /* pass 2: kernels */
     cdc_kernel_builder b = {&k->raw_cells, &k->raw_weights, -1, 0, &k->cand};
     for (int32_t i = 0; i < n; ++i) {
         const int ghost = i >= local->n;
         const cdc_particles *p = ghost ? ghosts : local;
         const int32_t j = ghost ? i - local->n : i;
-        cdc_particle_in in = {{p->position[3 * (size_t)j], p->position[3 * (size_t)j + 1], p->position[3 * (size_t)j + 2]},
-                              p->radius[j], k->hosts.v[i], ghost};
-        k->raw_sums.v[i] = 0.0;
-        k->fallback_pos.v[i] = -1;
+        const cdc_particle_in in = {{p->position[3 * (size_t)j], p->position[3 * (size_t)j + 1],
+                                     p->position[3 * (size_t)j + 2]},
+                                    p->radius[j], k->hosts.v[i], ghost};
+        if (!whole) {
+            k->raw_sums.v[i] = 0.0;
+            k->fallback_pos.v[i] = -1;
+        }
         if (in.host < 0) {
-            if (!ghost) {
-                cdc_status st = record_outside(k, particle_id(p, j));
-                if (st != CDC_OK) return st;
-            }
+            if (!ghost && (st = record_outside(k, particle_id(p, j))) != CDC_OK) return st;
         } else {
-            k->raw_cells.n = 0;
-            k->raw_weights.n = 0;
+            k->raw_cells.n = k->raw_weights.n = 0;
             b.fallback_cell = -1;
             b.distinct = 0;
-            cdc_status st = k->method->build(ctx, &k->prm, &in, &b);
-            if (st == CDC_OK) st = append_merged(k, b.distinct, &k->raw_sums.v[i]);
+            st = k->method->build(ctx, &k->prm, &in, &b);
             if (st != CDC_OK) return st;
-            if (b.fallback_cell >= 0) { /* weight 0 unless no rank has anything else */
-                k->fallback_pos.v[i] = (int32_t)k->cells.n;
-                if (cdc_ivec_push(&k->cells, b.fallback_cell) || cdc_dvec_push(&k->weights, 0.0))
-                    return cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
+            if (whole) {
+                st = append_normalised(k, particle_id(p, j), b.distinct, b.fallback_cell);
+            } else {
+                st = append_merged(k, b.distinct, &k->raw_sums.v[i]);
+                if (st == CDC_OK && b.fallback_cell >= 0) { /* weight 0 unless no rank has anything else */
+                    k->fallback_pos.v[i] = (int32_t)k->cells.n;
+                    if (cdc_ivec_push(&k->cells, b.fallback_cell) || cdc_dvec_push(&k->weights, 0.0))
+                        st = cdc_fail(ctx, CDC_ERR_NOMEM, "out of memory storing kernels");
+                }
             }
+            if (st != CDC_OK) return st;
         }
         k->offsets.v[k->offsets.n++] = (int32_t)k->cells.n;
     }
     k->seconds_locate = t1 - t0;
     k->seconds_kernel = now_seconds() - t1;
-    if (k->n_outside > 0)
-        return cdc_fail(ctx, CDC_ERR_OUTSIDE, "%d particle(s) outside this rank's mesh, first id %lld", (int)k->n_outside,
-                        (long long)k->outside_ids[0]);
+    if (k->n_outside > 0) {
+        char list[256] = "";
+        size_t used = 0;
+        for (int32_t q = 0; q < k->n_outside && q < 10 && used < sizeof list - 24; ++q)
+            used += (size_t)snprintf(list + used, sizeof list - used, "%s%lld", q ? " " : "",
+                                     (long long)k->outside_ids[q]);
+        return cdc_fail(ctx, CDC_ERR_OUTSIDE, "%d particle(s) outside %s, ids: %s%s", (int)k->n_outside,
+                        whole ? "the mesh" : "this rank's mesh", list, k->n_outside > 10 ? " ..." : "");
+    }
     return CDC_OK;
+}
+
+cdc_status cdc_kernels_build(cdc_kernels *k, const cdc_particles *p)
+{
+    if (!k) return CDC_ERR_ARGUMENT;
+    return build(k, p, NULL);
+}
+
+cdc_status cdc_kernels_build_raw(cdc_kernels *k, const cdc_particles *local, const cdc_particles *ghosts)
+{
+    if (!k || !local || !ghosts)
+        return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT, "cdc_kernels_build_raw: NULL argument");
+    return build(k, local, ghosts);
 }
 
 const double *cdc_kernels_raw_sums(const cdc_kernels *k) { return k ? k->raw_sums.v : NULL; }

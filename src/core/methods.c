@@ -27,9 +27,17 @@ unsigned cdc_method_params(const char *name)
     return m ? m->params : 0u;
 }
 
+/* "centre, divided, ...": made from the table, so the messages name exactly the registered methods
+ * (per thread, as the core keeps no shared mutable state) */
 const char *cdc_method_list(void)
 {
-    return "centre, divided, bigParticle, twoGrid, gaussian, exact";
+    static _Thread_local char list[256];
+    if (!list[0])
+        for (int i = 0; i < n_methods; ++i) {
+            if (i) strncat(list, ", ", sizeof list - strlen(list) - 1);
+            strncat(list, table[i]->name, sizeof list - strlen(list) - 1);
+        }
+    return list;
 }
 
 const cdc_method *cdc_find_method(const char *name)
