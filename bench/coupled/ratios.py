@@ -5,7 +5,7 @@ issue as a ratio measured in one run, and whether it is met.
     ratios.py coupled.csv > ratios.md
 
 Columns of the CSV (seconds over the same couplings): total_s (the coupled run's time loop), dem_s,
-fluid_s, coupling_s (its stage timers: locate + kernel + smoothing/limiter + forces + exchange),
+fluid_s, coupling_s (its stage timers but DEM, fluid and the output-only fields),
 dem_alone_s (LIGGGHTS alone, frozen coupling forces), fluid_alone_s (coarseDemFoam -frozenParticles'
 fluid stage), pimpleFoam_s (pimpleFoam, alpha = 1, same steps).
 """

@@ -106,6 +106,10 @@ timers() { grep "Stage timers" "$1" | tail -1; }
 stage() { # log name
     timers "$1" | python3 -c "import re,sys; l=sys.stdin.read(); m=re.search(r'\b$2 ([0-9.eE+-]+)', l); print(m.group(1) if m else 'nan')"
 }
+# the coupling's stages: every stage timer but DEM, fluid and the output-only fields (stageTimers.H)
+coupling_seconds() {
+    timers "$1" | python3 -c "import re,sys; print('%.6g' % sum(float(v) for k, v in re.findall(r'(\w+) ([0-9.eE+-]+) \(', sys.stdin.read()) if k not in ('DEM', 'fluid', 'fields')))"
+}
 loop_wall() { grep "^Progress:" "$1" | tail -1 | sed -E 's/.* wall ([0-9.eE+-]+) s.*/\1/'; }
 
 csv="$results/coupled.csv"
@@ -157,7 +161,7 @@ for np in $nps; do
         lg="$d/log.coarseDemFoam"
         total=$(loop_wall "$lg")
         demS=$(stage "$lg" DEM); fluidS=$(stage "$lg" fluid)
-        coup=$(python3 -c "print('%.6g' % sum(float(x) for x in '$(for s in locate kernel smoothing forces exchange; do stage "$lg" $s; done | tr '\n' ' ')'.split()))")
+        coup=$(coupling_seconds "$lg")
         # ---- the fluid alone, same case, frozen particles
         f="$work/${m}_np${np}_fluidAlone"
         case_at_state "$f" "$m" "$np" || exit 1

@@ -6,8 +6,8 @@
 For each run (tutorials/fluidizedBedMuller/runs/<model>_dx<..>_U<..>_<mode>): the RMS errors from
 results/comparison/errors.csv (compare.py), the wall time (per start of the solver, from its log or
 wall_seconds.txt, summed over restarts) and the coupling share of it from the solver's stage timers
-(locate, kernel, smoothing incl. the packing limiter, forces, exchange over all stages; each
-start's last line, summed). Copies each run's
+(every stage but DEM, fluid and the output-only fields, over all stages; each start's last line,
+summed; runs before the stages were renamed have other names, the same rule holds). Copies each run's
 profile CSVs and comparison plots to <out>/<run>_<commit>/ (runs of one model at different commits
 side by side) and writes <out>/error_vs_runtime.{csv,md,png}; the PNG labels each model's last run
 on the command line (give the runs oldest first) and shows its earlier runs as grey circles. Where a run also has the binned
@@ -105,6 +105,9 @@ def log_segments(log):
             restart = min(restart, seg["walls"][0][0])
     return segs
 
+# the solver's stage timers that are not the coupling's (src/openfoam/coupling/stageTimers.H)
+NOT_COUPLING = ("DEM", "fluid", "fields")
+
 def stage_times(segs):
     """Stage seconds summed over the segments (None without any stage-timer line)."""
     total = {}
@@ -150,7 +153,7 @@ def main():
         commit = " ".join(sorted(set(l.strip() for l in open(cpath) if l.strip()))) if os.path.exists(cpath) else "unknown"
         st = stage_times(segs) or {}
         total = sum(st.values()) or float("nan")
-        coupling = sum(st.get(k, 0) for k in ("locate", "kernel", "smoothing", "forces", "exchange"))
+        coupling = sum(v for k, v in st.items() if k not in NOT_COUPLING)
         info = open(os.path.join(run, "results", "profiles_info.txt")).readline().split(";")[0].strip()
         label = f"{name}_{commit.replace(' ', '+')}"
         nan5 = (float("nan"),) * 5

@@ -153,7 +153,7 @@ void coarseDemCoupling::couple
     particleForces(U, alpha, p, nuEff, DUDt);  // K_, fOther_, fReact_ per particle
     pushForces();                              // to the DEM for its next segment
 
-    timers_.start(stageTimers::exchange);
+    timers_.start(stageTimers::sources);
     exchangeDt_ = mesh_.time().deltaTValue();
     fluidSources(U);                           // Ksl, KslUs, fFluid with the same kernels
     Ksl.correctBoundaryConditions();
@@ -174,7 +174,7 @@ void coarseDemCoupling::pullParticles()
     const label n = particles_.size();
     nParticles_ = returnReduce(n, sumOp<label>());
     checkParticleCount();
-    timers_.start(stageTimers::exchange);
+    timers_.start(stageTimers::ghosts);
     reach_.resize(n);
     for (label i = 0; i < n; ++i)
     {
@@ -194,7 +194,7 @@ void coarseDemCoupling::updateVoidFraction(const cdc_particles& cp, const cdc_pa
     cdc_kernels_timing(voidFraction_.kernels(), &tLocate, &tKernel);
     timers_.add(stageTimers::locate, tLocate);
     timers_.add(stageTimers::kernel, tKernel);
-    timers_.add(stageTimers::smoothing, voidFraction_.smoothingSeconds());
+    timers_.add(stageTimers::alphaP, voidFraction_.alphaPSeconds());
     alphaP.correctBoundaryConditions();
     setFluidFraction(alpha);
     if (backgroundKernels_)
@@ -294,7 +294,7 @@ void coarseDemCoupling::pushForces()
         }
     }
     timers_.stop();
-    timers_.start(stageTimers::exchange);
+    timers_.start(stageTimers::push);
     if (keepRestartForces_)
     {
         keepRestartForces_ = false;   // the balance line of this step describes forces not applied

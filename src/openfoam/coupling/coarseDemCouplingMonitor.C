@@ -59,7 +59,7 @@ void coarseDemCoupling::compareExchangeInTime(const volVectorField& U)
 // the current U) vs minus what the particles get from the forces that act back on it.
 void coarseDemCoupling::recordBalances(const volVectorField& U)
 {
-    timers_.start(stageTimers::exchange);
+    timers_.start(stageTimers::monitor);
     vector fParticles(Zero);
     forceScale_ = 0;
     nonReacting_ = Zero;

@@ -108,7 +108,7 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
     movedVolume_(0),
     nLimitedCells_(0),
     nClasses_(0),
-    smoothingSeconds_(0)
+    alphaPSeconds_(0)
 {
     const cdc_status st = cdc_kernels_create(mesh.context(), method_.c_str(), &params_, &kernels_);
     if (st != CDC_OK)
@@ -268,7 +268,7 @@ void voidFraction::update
     double moved = 0;
     int32_t nLimited = 0;
     mesh_.check(cdc_limit_packing(ctx, 1.0 - alphaMin_, 200, a, &moved, &nLimited), "packing limiter");
-    smoothingSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    alphaPSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     movedVolume_ = moved;
     nLimitedCells_ = nLimited;
 }
