@@ -108,6 +108,106 @@ static double face_diffusivity(const cdc_diffusion_params *prm, double volume_p,
     return 2.0 * Dp * Dn / (Dp + Dn);
 }
 
+/* The implicit step's matrix A = V/dtau - K (symmetric positive definite) and its preconditioner. */
+typedef struct {
+    double *a;    /* per internal face: a_f D_f */
+    double *rD;   /* per cell: the preconditioner's reciprocal diagonal (DIC's factor, or 1/A_cc) */
+    double dtau;  /* pseudo-time step */
+    int dic;      /* DIC (1) or Jacobi (0) */
+    double tol;   /* relative residual of each solve */
+    int max_it;
+} implicit_system;
+
+static void setup_system(cdc_context *ctx, const cdc_diffusion_params *prm, implicit_system *sys)
+{
+    const cdc_mesh *m = ctx->mesh;
+    const size_t nc = (size_t)m->n_cells, ni = (size_t)m->n_internal_faces;
+    double *a = sys->a, *diag = sys->rD;
+    /* Face coefficients times D_f. Zhang et al.'s D rule: D = 0.001 in cells larger than 4 d, so
+     * that smoothing degenerates to the centroid method there; the face value is the harmonic mean. */
+    for (size_t f = 0; f < ni; ++f)
+        a[f] = face_diffusivity(prm, m->cell_volumes[m->owner[f]], m->cell_volumes[m->neighbour[f]]) *
+               ctx->face_coeff[f];
+    const cdc_halo *h = ctx->has_halo ? &ctx->halo : NULL;
+    for (int32_t i = 0; h && i < h->n_faces; ++i)
+        ctx->halo_coeff.v[i] = face_diffusivity(prm, m->cell_volumes[h->cell[i]], h->nbr_volume[i]) * h->coeff[i];
+    const int n_steps = prm->n_steps > 0 ? prm->n_steps : 4;
+    sys->tol = prm->tolerance > 0.0 ? prm->tolerance : 1e-10;
+    sys->max_it = prm->max_iterations > 0 ? prm->max_iterations : 1000;
+    sys->dtau = prm->bandwidth * prm->bandwidth / 4.0 / n_steps;
+
+    for (size_t c = 0; c < nc; ++c) diag[c] = m->cell_volumes[c] / sys->dtau;
+    for (size_t f = 0; f < ni; ++f) {
+        diag[m->owner[f]] += a[f];
+        diag[m->neighbour[f]] += a[f];
+    }
+    for (int32_t i = 0; h && i < h->n_faces; ++i) diag[h->cell[i]] += ctx->halo_coeff.v[i];
+    /* the preconditioner's reciprocal diagonal, in place of the diagonal */
+    sys->dic = upper_triangular(m);
+    double *rD = diag;
+    if (sys->dic)
+        for (size_t f = 0; f < ni; ++f) {
+            const int32_t o = m->owner[f];
+            rD[m->neighbour[f]] -= a[f] * a[f] / rD[o]; /* rD[o] is final: its faces to lower cells came first */
+        }
+    for (size_t c = 0; c < nc; ++c) rD[c] = 1.0 / rD[c];
+}
+
+/* One implicit step: A y = V/dtau x by preconditioned CG from y = x (so r = K x); work is four
+ * vectors of cells (r, p, q, z). */
+static cdc_status solve_step(cdc_context *ctx, const implicit_system *sys, const double *x, double *y, double *work[4])
+{
+    const cdc_mesh *m = ctx->mesh;
+    const size_t nc = (size_t)m->n_cells;
+    const double dtau = sys->dtau, *a = sys->a, *rD = sys->rD;
+    double *r = work[0], *p = work[1], *q = work[2], *z = work[3];
+    cdc_status st;
+    memcpy(y, x, nc * sizeof *y);
+    if ((st = laplacian(ctx, a, y, r)) != CDC_OK) return st;
+    double norms[3] = {0.0, 0.0, 0.0}; /* |b|^2, |r|^2, r.z */
+    precondition(m, sys->dic, a, rD, r, p);
+    for (size_t c = 0; c < nc; ++c) {
+        const double b = m->cell_volumes[c] / dtau * x[c];
+        norms[0] += b * b;
+        norms[1] += r[c] * r[c];
+        norms[2] += r[c] * p[c];
+    }
+    if ((st = global_sum(ctx, norms, 3)) != CDC_OK) return st;
+    const double bnorm = sqrt(norms[0]);
+    double rnorm = norms[1], rz = norms[2];
+    int it = 0;
+    while (sqrt(rnorm) > sys->tol * bnorm) {
+        if (++it > sys->max_it)
+            return cdc_fail(ctx, CDC_ERR_NOT_CONVERGED,
+                            "diffusion: CG did not reach tolerance %g in %d iterations (relative residual %g)",
+                            sys->tol, sys->max_it, sqrt(rnorm) / bnorm);
+        if ((st = laplacian(ctx, a, p, q)) != CDC_OK) return st;
+        double pAp = 0.0;
+        for (size_t c = 0; c < nc; ++c) {
+            q[c] = m->cell_volumes[c] / dtau * p[c] - q[c];
+            pAp += p[c] * q[c];
+        }
+        if ((st = global_sum(ctx, &pAp, 1)) != CDC_OK) return st;
+        const double alpha = rz / pAp;
+        double sums[2] = {0.0, 0.0}; /* |r|^2, r.z */
+        for (size_t c = 0; c < nc; ++c) {
+            y[c] += alpha * p[c];
+            r[c] -= alpha * q[c];
+        }
+        precondition(m, sys->dic, a, rD, r, z);
+        for (size_t c = 0; c < nc; ++c) {
+            sums[0] += r[c] * r[c];
+            sums[1] += r[c] * z[c];
+        }
+        if ((st = global_sum(ctx, sums, 2)) != CDC_OK) return st;
+        rnorm = sums[0];
+        const double beta = sums[1] / rz;
+        rz = sums[1];
+        for (size_t c = 0; c < nc; ++c) p[c] = z[c] + beta * p[c];
+    }
+    return CDC_OK;
+}
+
 cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double *phi)
 {
     if (!ctx || !prm || !phi) return cdc_fail(ctx, CDC_ERR_ARGUMENT, "diffusion: NULL argument");
@@ -127,89 +227,20 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
     for (int k = 0; k < 8; ++k)
         if (cdc_dvec_reserve(&ctx->scratch[k], k == 6 ? (ni > 0 ? ni : 1) : nc))
             return cdc_fail(ctx, CDC_ERR_NOMEM, "diffusion: out of memory");
-    double *x = ctx->scratch[0].v, *y = ctx->scratch[1].v, *r = ctx->scratch[2].v, *p = ctx->scratch[3].v,
-           *q = ctx->scratch[4].v, *diag = ctx->scratch[5].v, *a = ctx->scratch[6].v, *z = ctx->scratch[7].v;
-
-    /* Face coefficients times D_f. The seed's D rule: D = 0.001 in cells larger than 4 d, so that
-     * smoothing degenerates to the centroid method there; the face value is the harmonic mean. */
-    for (size_t f = 0; f < ni; ++f)
-        a[f] = face_diffusivity(prm, m->cell_volumes[m->owner[f]], m->cell_volumes[m->neighbour[f]]) *
-               ctx->face_coeff[f];
-    const cdc_halo *h = ctx->has_halo ? &ctx->halo : NULL;
-    for (int32_t i = 0; h && i < h->n_faces; ++i)
-        ctx->halo_coeff.v[i] = face_diffusivity(prm, m->cell_volumes[h->cell[i]], h->nbr_volume[i]) * h->coeff[i];
+    double *x = ctx->scratch[0].v, *y = ctx->scratch[1].v;
+    double *work[4] = {ctx->scratch[2].v, ctx->scratch[3].v, ctx->scratch[4].v, ctx->scratch[7].v};
+    implicit_system sys = {ctx->scratch[6].v, ctx->scratch[5].v, 0.0, 0, 0.0, 0};
+    setup_system(ctx, prm, &sys);
     const int n_steps = prm->n_steps > 0 ? prm->n_steps : 4;
-    const double tol = prm->tolerance > 0.0 ? prm->tolerance : 1e-10;
-    const int max_it = prm->max_iterations > 0 ? prm->max_iterations : 1000;
-    const double dtau = prm->bandwidth * prm->bandwidth / 4.0 / n_steps;
-
-    /* Matrix A = V/dtau - K (symmetric positive definite); its diagonal for Jacobi. */
-    for (size_t c = 0; c < nc; ++c) diag[c] = m->cell_volumes[c] / dtau;
-    for (size_t f = 0; f < ni; ++f) {
-        diag[m->owner[f]] += a[f];
-        diag[m->neighbour[f]] += a[f];
-    }
-    for (int32_t i = 0; h && i < h->n_faces; ++i) diag[h->cell[i]] += ctx->halo_coeff.v[i];
-    /* the preconditioner's reciprocal diagonal: DIC's factor, or Jacobi's */
-    const int dic = upper_triangular(m);
-    double *rD = diag; /* the diagonal itself is no longer needed once rD is formed */
-    if (dic)
-        for (size_t f = 0; f < ni; ++f) {
-            const int32_t o = m->owner[f];
-            rD[m->neighbour[f]] -= a[f] * a[f] / rD[o]; /* rD[o] is final: its faces to lower cells came first */
-        }
-    for (size_t c = 0; c < nc; ++c) rD[c] = 1.0 / rD[c];
 
     /* Work on x so phi is untouched if a solve fails. */
     memcpy(x, phi, nc * sizeof *x);
     for (int step = 0; step < n_steps; ++step) {
-        /* Solve A y = V/dtau x by preconditioned CG from y = x (so r = K x). */
-        memcpy(y, x, nc * sizeof *y);
-        if ((st = laplacian(ctx, a, y, r)) != CDC_OK) return st;
-        double norms[3] = {0.0, 0.0, 0.0}; /* |b|^2, |r|^2, r.z */
-        precondition(m, dic, a, rD, r, p);
-        for (size_t c = 0; c < nc; ++c) {
-            const double b = m->cell_volumes[c] / dtau * x[c];
-            norms[0] += b * b;
-            norms[1] += r[c] * r[c];
-            norms[2] += r[c] * p[c];
-        }
-        if ((st = global_sum(ctx, norms, 3)) != CDC_OK) return st;
-        const double bnorm = sqrt(norms[0]);
-        double rnorm = norms[1], rz = norms[2];
-        int it = 0;
-        while (sqrt(rnorm) > tol * bnorm) {
-            if (++it > max_it)
-                return cdc_fail(ctx, CDC_ERR_NOT_CONVERGED,
-                                "diffusion: CG did not reach tolerance %g in %d iterations (relative residual %g)",
-                                tol, max_it, sqrt(rnorm) / bnorm);
-            if ((st = laplacian(ctx, a, p, q)) != CDC_OK) return st;
-            double pAp = 0.0;
-            for (size_t c = 0; c < nc; ++c) {
-                q[c] = m->cell_volumes[c] / dtau * p[c] - q[c];
-                pAp += p[c] * q[c];
-            }
-            if ((st = global_sum(ctx, &pAp, 1)) != CDC_OK) return st;
-            const double alpha = rz / pAp;
-            double sums[2] = {0.0, 0.0}; /* |r|^2, r.z */
-            for (size_t c = 0; c < nc; ++c) {
-                y[c] += alpha * p[c];
-                r[c] -= alpha * q[c];
-            }
-            precondition(m, dic, a, rD, r, z);
-            for (size_t c = 0; c < nc; ++c) {
-                sums[0] += r[c] * r[c];
-                sums[1] += r[c] * z[c];
-            }
-            if ((st = global_sum(ctx, sums, 2)) != CDC_OK) return st;
-            rnorm = sums[0];
-            const double beta = sums[1] / rz;
-            rz = sums[1];
-            for (size_t c = 0; c < nc; ++c) p[c] = z[c] + beta * p[c];
-        }
+        if ((st = solve_step(ctx, &sys, x, y, work)) != CDC_OK) return st;
         /* Flux-form update from the implicit solution: conserves sum(x V) exactly. */
-        if ((st = laplacian(ctx, a, y, q)) != CDC_OK) return st;
-        for (size_t c = 0; c < nc; ++c) x[c] += dtau / m->cell_volumes[c] * q[c];
+        double *q = work[2];
+        if ((st = laplacian(ctx, sys.a, y, q)) != CDC_OK) return st;
+        for (size_t c = 0; c < nc; ++c) x[c] += sys.dtau / m->cell_volumes[c] * q[c];
     }
     memcpy(phi, x, nc * sizeof *phi);
     return CDC_OK;

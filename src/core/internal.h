@@ -223,6 +223,34 @@ static inline double cdc_dist2(const double a[3], const double b[3])
     return dx * dx + dy * dy + dz * dz;
 }
 
+/* The id of particle i in messages: its DEM id, or its index. */
+static inline int64_t cdc_particle_id(const cdc_particles *p, int32_t i) { return p->id ? p->id[i] : (int64_t)i; }
+
+/* A kernel set: the CSR kernels of the last build and the buffers reused across builds (kernels.c
+ * builds them, kernel_use.c uses them). */
+struct cdc_kernels {
+    cdc_context *ctx;
+    const cdc_method *method;
+    cdc_kernel_params prm;
+    int32_t n;                 /* particles of the last build (local, then ghosts) */
+    int32_t n_local;           /* of which this rank's own */
+    cdc_dvec raw_sums;         /* per particle: sum of raw weights on this rank (parallel builds) */
+    cdc_ivec fallback_pos;     /* per particle: entry of its fallback cell, or -1 (parallel builds) */
+    cdc_ivec offsets, cells;   /* CSR result */
+    cdc_dvec weights;
+    cdc_ivec raw_cells;        /* one particle's raw entries, before merging */
+    cdc_dvec raw_weights;
+    int32_t *slot;             /* cell -> position in the current particle's merged list */
+    int32_t *slot_stamp;
+    int32_t slot_now;
+    cdc_ivec hosts;            /* host cell of each particle in the last build */
+    cdc_candidates cand;       /* per-cell candidate lists of the radius searches (candidates.c) */
+    double seconds_locate, seconds_kernel; /* wall time of the last build's two passes */
+    int64_t *outside_ids;      /* ids of the particles outside the mesh in the last build */
+    int32_t n_outside;
+    size_t outside_cap;
+};
+
 /* The context a kernel set was created with (exchange.c spreads with it). */
 cdc_context *cdc_kernels_context(const cdc_kernels *k);
 

@@ -1,6 +1,7 @@
 /*
  * kernels.c -- the driver: locate particles, let the selected method append raw weights, merge
- * duplicate cells, normalise to sum 1, and use the kernels (alpha_p, spreading, gathering).
+ * duplicate cells, normalise to sum 1. Using the kernels (alpha_p, spreading, gathering) is in
+ * kernel_use.c.
  */
 #include "internal.h"
 
@@ -9,29 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-struct cdc_kernels {
-    cdc_context *ctx;
-    const cdc_method *method;
-    cdc_kernel_params prm;
-    int32_t n;                 /* particles of the last build (local, then ghosts) */
-    int32_t n_local;           /* of which this rank's own */
-    cdc_dvec raw_sums;         /* per particle: sum of raw weights on this rank (parallel builds) */
-    cdc_ivec fallback_pos;     /* per particle: entry of its fallback cell, or -1 (parallel builds) */
-    cdc_ivec offsets, cells;   /* CSR result */
-    cdc_dvec weights;
-    cdc_ivec raw_cells;        /* one particle's raw entries, before merging */
-    cdc_dvec raw_weights;
-    int32_t *slot;             /* cell -> position in the current particle's merged list */
-    int32_t *slot_stamp;
-    int32_t slot_now;
-    cdc_ivec hosts;            /* host cell of each particle in the last build */
-    cdc_candidates cand;       /* per-cell candidate lists of the radius searches (candidates.c) */
-    double seconds_locate, seconds_kernel; /* wall time of the last build's two passes */
-    int64_t *outside_ids;      /* ids of the particles outside the mesh in the last build */
-    int32_t n_outside;
-    size_t outside_cap;
-};
 
 int cdc_kernel_add(cdc_kernel_builder *b, int32_t cell, double w)
 {
@@ -87,7 +65,6 @@ void cdc_kernels_destroy(cdc_kernels *k)
     free(k);
 }
 
-static int64_t particle_id(const cdc_particles *p, int32_t i) { return p->id ? p->id[i] : (int64_t)i; }
 
 /* Everything that can be said about one particle set before touching any output. The largest
  * reach is noted for the candidate lists. A kernel larger than the whole mesh is an error in serial
@@ -105,17 +82,17 @@ static cdc_status check_particles(cdc_kernels *k, const cdc_particles *p, int wh
         const double r = p->radius[i];
         if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2]))
             return cdc_fail(ctx, CDC_ERR_PARTICLE, "particle %lld: position (%g %g %g) is not finite",
-                            (long long)particle_id(p, i), x[0], x[1], x[2]);
+                            (long long)cdc_particle_id(p, i), x[0], x[1], x[2]);
         if (!(r > 0.0) || !isfinite(r))
             return cdc_fail(ctx, CDC_ERR_PARTICLE, "particle %lld: radius %g is invalid (must be > 0)",
-                            (long long)particle_id(p, i), r);
+                            (long long)cdc_particle_id(p, i), r);
         const double reach = k->method->reach(&k->prm, r);
         if (reach > k->cand.wanted) k->cand.wanted = reach;
         if (whole_mesh && reach > diag)
             return cdc_fail(ctx, CDC_ERR_KERNEL,
                             "particle %lld: the %s kernel reaches %g m, more than the whole mesh (diagonal "
                             "%g m); reduce the expansion factor or bandwidth",
-                            (long long)particle_id(p, i), k->method->name, reach, diag);
+                            (long long)cdc_particle_id(p, i), k->method->name, reach, diag);
     }
     return CDC_OK;
 }
@@ -255,7 +232,7 @@ static cdc_status build(cdc_kernels *k, const cdc_particles *local, const cdc_pa
             k->fallback_pos.v[i] = -1;
         }
         if (in.host < 0) {
-            if (!ghost && (st = record_outside(k, particle_id(p, j))) != CDC_OK) return st;
+            if (!ghost && (st = record_outside(k, cdc_particle_id(p, j))) != CDC_OK) return st;
         } else {
             k->raw_cells.n = k->raw_weights.n = 0;
             b.fallback_cell = -1;
@@ -263,7 +240,7 @@ static cdc_status build(cdc_kernels *k, const cdc_particles *local, const cdc_pa
             st = k->method->build(ctx, &k->prm, &in, &b);
             if (st != CDC_OK) return st;
             if (whole) {
-                st = append_normalised(k, particle_id(p, j), b.distinct, b.fallback_cell);
+                st = append_normalised(k, cdc_particle_id(p, j), b.distinct, b.fallback_cell);
             } else {
                 st = append_merged(k, b.distinct, &k->raw_sums.v[i]);
                 if (st == CDC_OK && b.fallback_cell >= 0) { /* weight 0 unless no rank has anything else */
@@ -345,113 +322,4 @@ int32_t cdc_kernels_outside(const cdc_kernels *k, const int64_t **ids)
 {
     if (ids) *ids = k ? k->outside_ids : NULL;
     return k ? k->n_outside : 0;
-}
-
-/* How far along the unit direction e the particle reaches beyond the mesh, as a fraction of r
- * (0 if the end x + r e is in a cell): the boundary is bracketed between the centre (inside) and
- * the end (outside) and found by bisection. */
-static cdc_status reach_beyond(cdc_context *ctx, const double x[3], double r, const double e[3], int32_t host,
-                               double *fraction)
-{
-    double y[3] = {x[0] + r * e[0], x[1] + r * e[1], x[2] + r * e[2]};
-    int32_t c;
-    cdc_status st = cdc_locate_point(ctx, y, host, &c);
-    *fraction = 0.0;
-    if (st != CDC_OK || c >= 0) return st;
-    double in = 0.0, out = 1.0; /* along the axis, in radii */
-    while (out - in > 1e-6) {
-        const double mid = 0.5 * (in + out);
-        for (int d = 0; d < 3; ++d) y[d] = x[d] + mid * r * e[d];
-        st = cdc_locate_point(ctx, y, host, &c);
-        if (st != CDC_OK) return st;
-        if (c >= 0) in = mid; else out = mid;
-    }
-    *fraction = 1.0 - in;
-    return CDC_OK;
-}
-
-cdc_status cdc_kernels_partly_outside(const cdc_kernels *k, const cdc_particles *p, int32_t *count,
-                                      double *depth, int64_t *id)
-{
-    if (!k || !p || !count || !depth || !id) return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT,
-                                                             "cdc_kernels_partly_outside: NULL argument");
-    *count = 0;
-    *depth = 0.0;
-    *id = -1;
-    const int32_t n = p->n < k->n_local ? p->n : k->n_local;
-    for (int32_t i = 0; i < n; ++i) {
-        const int32_t host = k->hosts.v[i];
-        if (host < 0) continue; /* outside altogether: cdc_kernels_outside */
-        const double *x = p->position + 3 * (size_t)i;
-        double deepest = 0.0;
-        for (int a = 0; a < 6; ++a) {
-            double e[3] = {0.0, 0.0, 0.0}, f;
-            e[a / 2] = (a % 2) ? -1.0 : 1.0;
-            cdc_status st = reach_beyond(k->ctx, x, p->radius[i], e, host, &f);
-            if (st != CDC_OK) return st;
-            if (f > deepest) deepest = f;
-        }
-        if (deepest > 0.0) {
-            ++*count;
-            if (deepest > *depth) {
-                *depth = deepest;
-                *id = particle_id(p, i);
-            }
-        }
-    }
-    return CDC_OK;
-}
-
-cdc_status cdc_spread(const cdc_kernels *k, const double *q, int ncomp, double *out)
-{
-    /* a rank may hold no particles: then q may be NULL */
-    if (!k || (!q && k->n > 0) || !out || ncomp <= 0)
-        return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT, "cdc_spread: NULL argument or ncomp <= 0");
-    const cdc_mesh *m = k->ctx->mesh;
-    memset(out, 0, (size_t)m->n_cells * (size_t)ncomp * sizeof *out);
-    const int32_t *off = k->offsets.v;
-    for (int32_t i = 0; i < k->n; ++i)
-        for (int32_t e = off[i]; e < off[i + 1]; ++e) {
-            const int32_t c = k->cells.v[e];
-            const double w = k->weights.v[e];
-            for (int d = 0; d < ncomp; ++d) out[(size_t)c * ncomp + d] += w * q[(size_t)i * ncomp + d];
-        }
-    for (int32_t c = 0; c < m->n_cells; ++c) {
-        const double inv = 1.0 / m->cell_volumes[c];
-        for (int d = 0; d < ncomp; ++d) out[(size_t)c * ncomp + d] *= inv;
-    }
-    return CDC_OK;
-}
-
-cdc_status cdc_alpha_p(const cdc_kernels *k, const cdc_particles *p, double *alpha_p)
-{
-    if (!k || !p || !alpha_p || p->n != k->n)
-        return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT,
-                        "cdc_alpha_p: NULL argument or particle count differs from the last build");
-    /* Spread particle volumes; reuse raw_weights as the per-particle volume buffer. */
-    cdc_kernels *mk = (cdc_kernels *)k;
-    if (cdc_dvec_reserve(&mk->raw_weights, (size_t)p->n + 1))
-        return cdc_fail(k->ctx, CDC_ERR_NOMEM, "out of memory in cdc_alpha_p");
-    for (int32_t i = 0; i < p->n; ++i)
-        mk->raw_weights.v[i] = 4.0 / 3.0 * CDC_PI * p->radius[i] * p->radius[i] * p->radius[i];
-    return cdc_spread(k, mk->raw_weights.v, 1, alpha_p);
-}
-
-cdc_status cdc_gather(const cdc_kernels *k, const double *field, int ncomp, double *out)
-{
-    if (!k || !field || (!out && k->n > 0) || ncomp <= 0)
-        return cdc_fail(k ? k->ctx : NULL, CDC_ERR_ARGUMENT, "cdc_gather: NULL argument or ncomp <= 0");
-    /* The adjoint of cdc_spread: what a particle sees is the kernel-weighted mean of the field.
-     * For kernels uniform in volume fraction (w_c = V_c / sum V_c) this is eqs. 21-22. */
-    const int32_t *off = k->offsets.v;
-    for (int32_t i = 0; i < k->n; ++i) {
-        double *o = out + (size_t)i * ncomp;
-        for (int d = 0; d < ncomp; ++d) o[d] = 0.0;
-        for (int32_t e = off[i]; e < off[i + 1]; ++e) {
-            const int32_t c = k->cells.v[e];
-            const double w = k->weights.v[e];
-            for (int d = 0; d < ncomp; ++d) o[d] += w * field[(size_t)c * ncomp + d];
-        }
-    }
-    return CDC_OK;
 }

@@ -77,6 +77,113 @@ static cdc_status hop_distances(cdc_context *ctx, const double *room, double *di
     }
 }
 
+/* The limiter's work arrays: per cell, and per processor face the other side's values. */
+typedef struct {
+    double *vol, *room, *delta, *dist, *fill, *give, *nb_room, *hop;
+    double *f_room, *f_dist, *f_give, *f_nb_room, *f_hop, *f_fill;
+    int32_t nf;
+    const int32_t *fcell;
+} limiter_work;
+
+/* A sweep's plan: every cell's free room and hop distance to room; every donor's request into its
+ * neighbours' room (give) and the share of the rest that hops one cell towards room (hop). */
+static cdc_status plan_sweep(cdc_context *ctx, double alpha_max, limiter_work *w)
+{
+    const cdc_mesh *m = ctx->mesh;
+    const size_t nc = (size_t)m->n_cells;
+    cdc_status st;
+    /* free room; a round-off sliver is no room (else a cell just filled to the limit would
+     * attract excess back and two cells could trade it for ever) */
+    for (size_t c = 0; c < nc; ++c) {
+        const double cap = alpha_max * m->cell_volumes[c], r = cap - w->vol[c];
+        w->room[c] = r > 1e-12 * cap ? r : 0.0;
+        w->fill[c] = 0.0;
+    }
+    if ((st = exchange(ctx, w->room, w->f_room)) != CDC_OK) return st;
+    /* hop distance of every cell to the nearest cell with room: excess that finds no room next
+     * door moves downhill, so a packed block empties in about as many sweeps as it is cells
+     * wide, not as many as its width squared */
+    if ((st = hop_distances(ctx, w->room, w->dist, w->f_dist)) != CDC_OK) return st;
+    /* donors: what they give into the neighbours' room, and what hops on. First each donor's
+     * neighbours: their room, and how many are downhill (kept in hop[] until the hop share is
+     * known) */
+    for (size_t c = 0; c < nc; ++c) {
+        w->give[c] = w->nb_room[c] = w->hop[c] = 0.0;
+        if (w->vol[c] - alpha_max * m->cell_volumes[c] <= 0.0) continue;
+        for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
+            w->nb_room[c] += w->room[ctx->cell_cells[q]];
+            w->hop[c] += w->dist[ctx->cell_cells[q]] < w->dist[c];
+        }
+    }
+    for (int32_t i = 0; i < w->nf; ++i) {
+        w->nb_room[w->fcell[i]] += w->f_room[i];
+        w->hop[w->fcell[i]] += w->f_dist[i] < w->dist[w->fcell[i]];
+    }
+    for (size_t c = 0; c < nc; ++c) {
+        const double excess = w->vol[c] - alpha_max * m->cell_volumes[c];
+        if (excess <= 0.0) { w->hop[c] = 0.0; continue; }
+        /* first fill the neighbours' room, in proportion to it (requests; scaled below so that
+         * several donors together never overfill a receiver) */
+        w->give[c] = fmin(excess, w->nb_room[c]);
+        /* the rest moves one hop towards the nearest room, shared by the downhill neighbours */
+        const double rest = excess - w->give[c];
+        w->hop[c] = rest > 0.0 && w->hop[c] > 0.0 ? rest / w->hop[c] : 0.0;
+    }
+    if ((st = exchange(ctx, w->give, w->f_give)) != CDC_OK || (st = exchange(ctx, w->nb_room, w->f_nb_room)) != CDC_OK ||
+        (st = exchange(ctx, w->hop, w->f_hop)) != CDC_OK)
+        return st;
+    return CDC_OK;
+}
+
+/* A sweep's moves from its plan, into delta: the hops, and the requests scaled so that no receiver
+ * takes more than its room. Every transfer is one expression added to one cell and subtracted from
+ * the other (across a processor face, each side evaluates the same expression of the same numbers). */
+static cdc_status move_sweep(cdc_context *ctx, limiter_work *w)
+{
+    const size_t nc = (size_t)ctx->mesh->n_cells;
+    const double *room = w->room, *dist = w->dist, *give = w->give, *nb_room = w->nb_room, *hop = w->hop;
+    double *fill = w->fill, *delta = w->delta;
+    memset(delta, 0, nc * sizeof *delta);
+    /* requests and hops, internal faces */
+    for (size_t c = 0; c < nc; ++c) {
+        if (give[c] <= 0.0 && hop[c] <= 0.0) continue;
+        for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
+            const int32_t n = ctx->cell_cells[q];
+            if (give[c] > 0.0) fill[n] += give[c] * room[n] / nb_room[c];
+            if (hop[c] > 0.0 && dist[n] < dist[c]) {
+                delta[n] += hop[c];
+                delta[c] -= hop[c];
+            }
+        }
+    }
+    /* processor faces: this rank's donors send, the other rank's donors give here */
+    for (int32_t i = 0; i < w->nf; ++i) {
+        const int32_t c = w->fcell[i];
+        if (hop[c] > 0.0 && w->f_dist[i] < dist[c]) delta[c] -= hop[c];
+        if (w->f_hop[i] > 0.0 && dist[c] < w->f_dist[i]) delta[c] += w->f_hop[i];
+        if (w->f_give[i] > 0.0) fill[c] += w->f_give[i] * room[c] / w->f_nb_room[i];
+    }
+    /* accepted share of every receiver: all its room at most */
+    for (size_t c = 0; c < nc; ++c) fill[c] = fill[c] > room[c] ? room[c] / fill[c] : 1.0;
+    cdc_status st = exchange(ctx, fill, w->f_fill);
+    if (st != CDC_OK) return st;
+    for (size_t c = 0; c < nc; ++c) {
+        if (give[c] <= 0.0) continue;
+        for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
+            const int32_t n = ctx->cell_cells[q];
+            const double share = give[c] * room[n] / nb_room[c] * fill[n];
+            delta[n] += share;
+            delta[c] -= share;
+        }
+    }
+    for (int32_t i = 0; i < w->nf; ++i) {
+        const int32_t c = w->fcell[i];
+        if (give[c] > 0.0) delta[c] -= give[c] * w->f_room[i] / nb_room[c] * w->f_fill[i];
+        if (w->f_give[i] > 0.0) delta[c] += w->f_give[i] * room[c] / w->f_nb_room[i] * fill[c];
+    }
+    return CDC_OK;
+}
+
 cdc_status cdc_limit_packing(cdc_context *ctx, double alpha_max, int max_sweeps, double *alpha_p,
                              double *moved_volume, int32_t *n_limited_cells)
 {
@@ -88,17 +195,16 @@ cdc_status cdc_limit_packing(cdc_context *ctx, double alpha_max, int max_sweeps,
     const cdc_mesh *m = ctx->mesh;
     const size_t nc = (size_t)m->n_cells;
     const int32_t nf = ctx->has_halo ? ctx->halo.n_faces : 0;
-    const int32_t *fcell = ctx->has_halo ? ctx->halo.cell : NULL;
     for (int k = 0; k < 8; ++k)
         if (cdc_dvec_reserve(&ctx->scratch[k], nc + 1)) return cdc_fail(ctx, CDC_ERR_NOMEM, "packing limiter: out of memory");
     if (cdc_dvec_reserve(&ctx->halo_work, 6 * (size_t)nf + 1))
         return cdc_fail(ctx, CDC_ERR_NOMEM, "packing limiter: out of memory");
-    /* per cell */
-    double *vol = ctx->scratch[0].v, *room = ctx->scratch[1].v, *delta = ctx->scratch[2].v, *dist = ctx->scratch[3].v,
-           *fill = ctx->scratch[4].v, *give = ctx->scratch[5].v, *nb_room = ctx->scratch[6].v, *hop = ctx->scratch[7].v;
-    /* per processor face: the other side's cell values */
-    double *f_room = ctx->halo_work.v, *f_dist = f_room + nf, *f_give = f_dist + nf, *f_nb_room = f_give + nf,
-           *f_hop = f_nb_room + nf, *f_fill = f_hop + nf;
+    double *f = ctx->halo_work.v;
+    limiter_work w = {ctx->scratch[0].v, ctx->scratch[1].v, ctx->scratch[2].v, ctx->scratch[3].v,
+                      ctx->scratch[4].v, ctx->scratch[5].v, ctx->scratch[6].v, ctx->scratch[7].v,
+                      f, f + nf, f + 2 * nf, f + 3 * nf, f + 4 * nf, f + 5 * nf,
+                      nf, ctx->has_halo ? ctx->halo.cell : NULL};
+    double *vol = w.vol;
     cdc_status st;
 
     /* Work in solid volumes (m^3): transfers are then exact opposites. */
@@ -123,87 +229,10 @@ cdc_status cdc_limit_packing(cdc_context *ctx, double alpha_max, int max_sweeps,
     if ((st = global_sum(ctx, &remaining, 1)) != CDC_OK) return st;
     int sweep = 0;
     for (; remaining > 0.0 && sweep < max_sweeps; ++sweep) {
-        memset(delta, 0, nc * sizeof *delta);
-        /* free room; a round-off sliver is no room (else a cell just filled to the limit would
-         * attract excess back and two cells could trade it for ever) */
-        for (size_t c = 0; c < nc; ++c) {
-            const double cap = alpha_max * m->cell_volumes[c], r = cap - vol[c];
-            room[c] = r > 1e-12 * cap ? r : 0.0;
-            fill[c] = 0.0;
-        }
-        if ((st = exchange(ctx, room, f_room)) != CDC_OK) return st;
-        /* hop distance of every cell to the nearest cell with room: excess that finds no room next
-         * door moves downhill, so a packed block empties in about as many sweeps as it is cells
-         * wide, not as many as its width squared */
-        if ((st = hop_distances(ctx, room, dist, f_dist)) != CDC_OK) return st;
-        /* donors: what they give into the neighbours' room, and what hops on. First each donor's
-         * neighbours: their room, and how many are downhill (kept in hop[] until the hop share is
-         * known) */
-        for (size_t c = 0; c < nc; ++c) {
-            give[c] = nb_room[c] = hop[c] = 0.0;
-            if (vol[c] - alpha_max * m->cell_volumes[c] <= 0.0) continue;
-            for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
-                nb_room[c] += room[ctx->cell_cells[q]];
-                hop[c] += dist[ctx->cell_cells[q]] < dist[c];
-            }
-        }
-        for (int32_t i = 0; i < nf; ++i) {
-            nb_room[fcell[i]] += f_room[i];
-            hop[fcell[i]] += f_dist[i] < dist[fcell[i]];
-        }
-        for (size_t c = 0; c < nc; ++c) {
-            const double excess = vol[c] - alpha_max * m->cell_volumes[c];
-            if (excess <= 0.0) { hop[c] = 0.0; continue; }
-            /* first fill the neighbours' room, in proportion to it (requests; scaled below so that
-             * several donors together never overfill a receiver) */
-            give[c] = fmin(excess, nb_room[c]);
-            /* the rest moves one hop towards the nearest room, shared by the downhill neighbours */
-            const double rest = excess - give[c];
-            hop[c] = rest > 0.0 && hop[c] > 0.0 ? rest / hop[c] : 0.0;
-        }
-        if ((st = exchange(ctx, give, f_give)) != CDC_OK || (st = exchange(ctx, nb_room, f_nb_room)) != CDC_OK ||
-            (st = exchange(ctx, hop, f_hop)) != CDC_OK)
-            return st;
-        /* requests and hops, internal faces */
-        for (size_t c = 0; c < nc; ++c) {
-            if (give[c] <= 0.0 && hop[c] <= 0.0) continue;
-            for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
-                const int32_t n = ctx->cell_cells[q];
-                if (give[c] > 0.0) fill[n] += give[c] * room[n] / nb_room[c];
-                if (hop[c] > 0.0 && dist[n] < dist[c]) {
-                    delta[n] += hop[c];
-                    delta[c] -= hop[c];
-                }
-            }
-        }
-        /* processor faces: this rank's donors send, the other rank's donors give here; each side
-         * evaluates the same expression of the same numbers */
-        for (int32_t i = 0; i < nf; ++i) {
-            const int32_t c = fcell[i];
-            if (hop[c] > 0.0 && f_dist[i] < dist[c]) delta[c] -= hop[c];
-            if (f_hop[i] > 0.0 && dist[c] < f_dist[i]) delta[c] += f_hop[i];
-            if (f_give[i] > 0.0) fill[c] += f_give[i] * room[c] / f_nb_room[i];
-        }
-        /* accepted share of every receiver: all its room at most */
-        for (size_t c = 0; c < nc; ++c) fill[c] = fill[c] > room[c] ? room[c] / fill[c] : 1.0;
-        if ((st = exchange(ctx, fill, f_fill)) != CDC_OK) return st;
-        for (size_t c = 0; c < nc; ++c) {
-            if (give[c] <= 0.0) continue;
-            for (int32_t q = ctx->cell_cell_offsets[c]; q < ctx->cell_cell_offsets[c + 1]; ++q) {
-                const int32_t n = ctx->cell_cells[q];
-                const double share = give[c] * room[n] / nb_room[c] * fill[n];
-                delta[n] += share;
-                delta[c] -= share;
-            }
-        }
-        for (int32_t i = 0; i < nf; ++i) {
-            const int32_t c = fcell[i];
-            if (give[c] > 0.0) delta[c] -= give[c] * f_room[i] / nb_room[c] * f_fill[i];
-            if (f_give[i] > 0.0) delta[c] += f_give[i] * room[c] / f_nb_room[i] * fill[c];
-        }
+        if ((st = plan_sweep(ctx, alpha_max, &w)) != CDC_OK || (st = move_sweep(ctx, &w)) != CDC_OK) return st;
         remaining = 0.0;
         for (size_t c = 0; c < nc; ++c) {
-            vol[c] += delta[c];
+            vol[c] += w.delta[c];
             if (vol[c] > alpha_max * m->cell_volumes[c] * (1.0 + 1e-12)) remaining += 1.0;
         }
         if ((st = global_sum(ctx, &remaining, 1)) != CDC_OK) return st;

@@ -29,20 +29,89 @@ static const double* perTypeProperty(LAMMPS_NS::LAMMPS* lmp, const char* name)
     return p ? p->get_values() : nullptr;
 }
 
-demTimestepEstimate estimateDemTimestep(LAMMPS_NS::LAMMPS* lmp, scalar maxImpactVelocity)
+// Stiffest effective modulus of each type against any type: E*_ij = 1/((1-nu_i^2)/E_i + (1-nu_j^2)/E_j)
+static std::vector<double> stiffestModulus(int ntypes, const double* Y, const double* nu)
+{
+    std::vector<double> EstarMax(ntypes + 1, 0.0);
+    for (int i = 1; i <= ntypes; ++i)
+    {
+        for (int j = 1; j <= ntypes; ++j)
+        {
+            const double Es =
+                1.0/((1 - nu[i - 1]*nu[i - 1])/Y[i - 1] + (1 - nu[j - 1]*nu[j - 1])/Y[j - 1]);
+            EstarMax[i] = std::max(EstarMax[i], Es);
+        }
+    }
+    return EstarMax;
+}
+
+// The particles' radius, density and modulus extremes, the largest speed and the smallest Rayleigh
+// time over every rank, into e.
+static void particleExtremes(LAMMPS_NS::LAMMPS* lmp, const double* Y, const double* nu, demTimestepEstimate& e)
 {
     const scalar pi = constant::mathematical::pi;
+    const LAMMPS_NS::Atom* atom = lmp->atom;
+    const double* r = atom->radius;
+    const double* rmass = atom->rmass;
+    const double* dens = atom->density_flag ? atom->density : nullptr;
+    double** v = atom->v;
+    // 0 rMin, 1 rhoMin, 2 EMin, 3 tR; max: rMax, rhoMax, EMax, vmax
+    double mins[4] = {1e300, 1e300, 1e300, 1e300};
+    double maxs[4] = {0, 0, 0, 0};
+    for (int i = 0; i < atom->nlocal; ++i)
+    {
+        const double ri = r[i];
+        const double vol = 4.0/3.0*pi*ri*ri*ri;
+        const double rho = dens ? dens[i] : (rmass ? rmass[i]/vol : 0);
+        const double E = Y[atom->type[i] - 1], nui = nu[atom->type[i] - 1];
+        // Zhang et al. (2023) eq. 20 with d = 2 r
+        const double tR = 0.5*pi*(2*ri)/(0.163*nui + 0.8766)*std::sqrt(2*rho*(1 + nui)/E);
+        mins[0] = std::min(mins[0], ri);
+        mins[1] = std::min(mins[1], rho);
+        mins[2] = std::min(mins[2], E);
+        mins[3] = std::min(mins[3], tR);
+        maxs[0] = std::max(maxs[0], ri);
+        maxs[1] = std::max(maxs[1], rho);
+        maxs[2] = std::max(maxs[2], E);
+        maxs[3] = std::max(maxs[3], std::sqrt(v[i][0]*v[i][0] + v[i][1]*v[i][1] + v[i][2]*v[i][2]));
+    }
+    double gmins[4], gmaxs[4];
+    MPI_Allreduce(mins, gmins, 4, MPI_DOUBLE, MPI_MIN, lmp->world);
+    MPI_Allreduce(maxs, gmaxs, 4, MPI_DOUBLE, MPI_MAX, lmp->world);
+    e.rMin = gmins[0]; e.rhoMin = gmins[1]; e.EMin = gmins[2]; e.tRayleigh = gmins[3];
+    e.rMax = gmaxs[0]; e.rhoMax = gmaxs[1]; e.EMax = gmaxs[2]; e.maxParticleSpeed = gmaxs[3];
+}
+
+// The smallest Hertz contact time over every rank: each particle against an identical partner
+// (m* = m/2, R* = r/2) of the stiffest type, at the impact velocity vImp.
+static double hertzTime(LAMMPS_NS::LAMMPS* lmp, const std::vector<double>& EstarMax, double vImp)
+{
+    const scalar pi = constant::mathematical::pi;
+    const LAMMPS_NS::Atom* atom = lmp->atom;
+    double tH = 1e300;
+    for (int i = 0; i < atom->nlocal; ++i)
+    {
+        const double ri = atom->radius[i];
+        const double vol = 4.0/3.0*pi*ri*ri*ri;
+        const double m = atom->rmass ? atom->rmass[i] : (atom->density_flag ? atom->density[i]*vol : 0);
+        const double mStar = 0.5*m, RStar = 0.5*ri, Es = EstarMax[atom->type[i]];
+        tH = std::min(tH, 2.87*std::pow(mStar*mStar/(RStar*Es*Es*vImp), 0.2));
+    }
+    double global = 0;
+    MPI_Allreduce(&tH, &global, 1, MPI_DOUBLE, MPI_MIN, lmp->world);
+    return global;
+}
+
+demTimestepEstimate estimateDemTimestep(LAMMPS_NS::LAMMPS* lmp, scalar maxImpactVelocity)
+{
     demTimestepEstimate e;
     e.dt = lmp->update->dt;
-    LAMMPS_NS::Atom* atom = lmp->atom;
-    MPI_Comm world = lmp->world;
-
-    const int ntypes = atom->ntypes;
+    const LAMMPS_NS::Atom* atom = lmp->atom;
     const double* Y = perTypeProperty(lmp, "youngsModulus");
     const double* nu = perTypeProperty(lmp, "poissonsRatio");
 
     long long nLocal = atom->nlocal, nAll = 0;
-    MPI_Allreduce(&nLocal, &nAll, 1, MPI_LONG_LONG, MPI_SUM, world);
+    MPI_Allreduce(&nLocal, &nAll, 1, MPI_LONG_LONG, MPI_SUM, lmp->world);
     e.nParticles = label(nAll);
     if (!Y || !nu)
     {
@@ -59,66 +128,9 @@ demTimestepEstimate estimateDemTimestep(LAMMPS_NS::LAMMPS* lmp, scalar maxImpact
         e.reason = "the DEM atom style has no radius (atom_style granular/sphere is needed)";
         return e;
     }
-
-    // stiffest effective modulus of type i against any type: E*_ij = 1/((1-nu_i^2)/E_i + (1-nu_j^2)/E_j)
-    std::vector<double> EstarMax(ntypes + 1, 0.0);
-    for (int i = 1; i <= ntypes; ++i)
-    {
-        for (int j = 1; j <= ntypes; ++j)
-        {
-            const double Es =
-                1.0/((1 - nu[i - 1]*nu[i - 1])/Y[i - 1] + (1 - nu[j - 1]*nu[j - 1])/Y[j - 1]);
-            EstarMax[i] = std::max(EstarMax[i], Es);
-        }
-    }
-
-    const int n = atom->nlocal;
-    const double* r = atom->radius;
-    const double* rmass = atom->rmass;
-    const double* dens = atom->density_flag ? atom->density : nullptr;
-    const int* type = atom->type;
-    double** v = atom->v;
-
-    // local extrema: 0 rMin, 1 rhoMin, 2 EMin(neg max), 3 tR; max: rMax, rhoMax, EMax, vmax
-    double mins[4] = {1e300, 1e300, 1e300, 1e300};
-    double maxs[4] = {0, 0, 0, 0};
-    for (int i = 0; i < n; ++i)
-    {
-        const double ri = r[i];
-        const double vol = 4.0/3.0*pi*ri*ri*ri;
-        const double rho = dens ? dens[i] : (rmass ? rmass[i]/vol : 0);
-        const double E = Y[type[i] - 1], nui = nu[type[i] - 1];
-        // Zhang et al. (2023) eq. 20 with d = 2 r
-        const double tR = 0.5*pi*(2*ri)/(0.163*nui + 0.8766)*std::sqrt(2*rho*(1 + nui)/E);
-        mins[0] = std::min(mins[0], ri);
-        mins[1] = std::min(mins[1], rho);
-        mins[2] = std::min(mins[2], E);
-        mins[3] = std::min(mins[3], tR);
-        maxs[0] = std::max(maxs[0], ri);
-        maxs[1] = std::max(maxs[1], rho);
-        maxs[2] = std::max(maxs[2], E);
-        maxs[3] = std::max(maxs[3], std::sqrt(v[i][0]*v[i][0] + v[i][1]*v[i][1] + v[i][2]*v[i][2]));
-    }
-    double gmins[4], gmaxs[4];
-    MPI_Allreduce(mins, gmins, 4, MPI_DOUBLE, MPI_MIN, world);
-    MPI_Allreduce(maxs, gmaxs, 4, MPI_DOUBLE, MPI_MAX, world);
-    e.rMin = gmins[0]; e.rhoMin = gmins[1]; e.EMin = gmins[2]; e.tRayleigh = gmins[3];
-    e.rMax = gmaxs[0]; e.rhoMax = gmaxs[1]; e.EMax = gmaxs[2]; e.maxParticleSpeed = gmaxs[3];
+    particleExtremes(lmp, Y, nu, e);
     e.impactVelocity = std::max(double(maxImpactVelocity), 2*e.maxParticleSpeed);
-
-    // Hertz: identical partner (m* = m/2, R* = r/2), stiffest partner type
-    double tH = 1e300;
-    const double vImp = e.impactVelocity;
-    for (int i = 0; i < n; ++i)
-    {
-        const double ri = r[i];
-        const double vol = 4.0/3.0*pi*ri*ri*ri;
-        const double m = rmass ? rmass[i] : (dens ? dens[i]*vol : 0);
-        const double mStar = 0.5*m, RStar = 0.5*ri, Es = EstarMax[type[i]];
-        tH = std::min(tH, 2.87*std::pow(mStar*mStar/(RStar*Es*Es*vImp), 0.2));
-    }
-    MPI_Allreduce(&tH, &e.tHertz, 1, MPI_DOUBLE, MPI_MIN, world);
-
+    e.tHertz = hertzTime(lmp, stiffestModulus(atom->ntypes, Y, nu), e.impactVelocity);
     if (!(e.rMin > 0) || !(e.rhoMin > 0))
     {
         e.reason = "a particle has a radius or density <= 0";

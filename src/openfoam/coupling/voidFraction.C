@@ -124,6 +124,12 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
             << " is invalid: must be in (0, 1) (e.g. 0.3 for spheres)" << exit(FatalIOError);
     }
 
+    readSmoothing(dict);
+}
+
+// smoothingModel and its <model>Props: which smoothing, its parameters, checked
+void voidFraction::readSmoothing(const dictionary& dict)
+{
     const word sm = dict.lookupOrDefault<word>("smoothingModel", "off");
     if (sm == "diffusion")
     {

@@ -50,41 +50,7 @@ int main(int argc, char *argv[])
     #include "createFields.H"
     #include "initContinuityErrs.H"
 
-    // CFD step = couplingInterval DEM steps
-    const bool frozenParticles = args.found("frozenParticles");
-    if (frozenParticles)
-    {
-        Info<< "frozenParticles: the DEM and the coupling stay at the start's state; the fluid alone is"
-            << " solved" << nl << endl;
-    }
-    const bool adjustTimeStep = runTime.controlDict().lookupOrDefault<Switch>("adjustTimeStep", false);
-    const scalar maxCo = runTime.controlDict().lookupOrDefault<scalar>("maxCo", 0.5);
-    label nCouple = coupling.couplingInterval();
-    const label maxCouple = nCouple;
-    // Not adjusted to the write times (adjust = false): the DEM advances exactly nCouple DEM steps
-    // per CFD step, so both clocks and the impulses they exchange stay equal. Writes and samples
-    // with adjustableRunTime then fall on the CFD step nearest to each interval.
-    const scalar deltaTDict = runTime.deltaTValue();
-    runTime.setDeltaT(nCouple*coupling.demTimestep(), false);
-    Info<< "CFD time step = " << nCouple << " x DEM step " << coupling.demTimestep() << " s = "
-        << runTime.deltaTValue() << " s"
-        << (adjustTimeStep ? " (adjusted to maxCo, at most this couplingInterval)" : "");
-    if (mag(deltaTDict - runTime.deltaTValue()) > 1e-12*runTime.deltaTValue())
-    {
-        // said once: the coupling sets the CFD step, whatever system/controlDict's deltaT says
-        Info<< "; it replaces deltaT " << deltaTDict << " of " << runTime.controlDict().name()
-            << " (couplingInterval in constant/couplingProperties sets the CFD step)";
-    }
-    Info<< nl << endl;
-    {
-        const scalar steps = runTime.controlDict().get<scalar>("writeInterval")/runTime.deltaTValue();
-        const word wc(runTime.controlDict().get<word>("writeControl"));
-        if ((wc == "runTime" || wc == "adjustableRunTime") && mag(steps - std::round(steps)) > 1e-6*steps)
-        {
-            Info<< "writeInterval is " << steps << " CFD steps: fields are written at the nearest step"
-                << nl << endl;
-        }
-    }
+    #include "setCouplingTimeStep.H"
 
     // The fluid acceleration only when a force model needs it (virtual mass).
     auto couple = [&]()
@@ -109,25 +75,7 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
-        #include "CourantNo.H"
-        if (adjustTimeStep && CoNum > SMALL)
-        {
-            // the interval that would give maxCo, rounded down; growth limited to 20 % (at least
-            // one DEM step, so a small interval can grow back), never above the dictionary's
-            const label grown = max(nCouple + 1, label(1.2*nCouple));
-            const scalar target = min(scalar(maxCouple), nCouple*maxCo/CoNum);   // clamped before the cast
-            const label n = max(label(1), min(grown, label(target)));
-            if (n != nCouple)
-            {
-                nCouple = n;
-                coupling.setCouplingInterval(n);
-                runTime.setDeltaT(nCouple*coupling.demTimestep(), false);
-            }
-        }
-        else if (CoNum > 1)
-        {
-            WarningInFunction << "Courant number " << CoNum << " > 1 with a fixed time step" << endl;
-        }
+        #include "adjustCouplingInterval.H"
         ++runTime;
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
