@@ -90,7 +90,7 @@ typedef struct cdc_particles {
 typedef struct cdc_kernel_params {
     double expansion_factor;  /* bigParticle: n >= 1 (0 = original equal split over overlapped cells) */
     double search_factor;     /* twoGrid: search radius / R (default 3 when 0) */
-    double bandwidth;         /* gaussian: b > 0 in metres, kernel exp(-r^2/b^2) (seed eq. 6) */
+    double bandwidth;         /* gaussian: b > 0 in metres, kernel exp(-r^2/b^2) (Zhang et al. 2023 eq. 6) */
     double cutoff_factor;     /* gaussian: truncation radius / b (default 2 when 0) */
     int wall_mirror;          /* 1: expansion kernels mirror across wall faces (no wall over-concentration) */
 } cdc_kernel_params;
@@ -222,10 +222,10 @@ cdc_status cdc_exchange_sources(const cdc_kernels *k, const cdc_exchange_in *in,
 
 /* ------------------------------------------------------------------ field operations */
 
-/* Diffusion smoothing of a cell field (seed eq. 7): d(phi)/dtau = div(D grad phi), zero flux at every
+/* Diffusion smoothing of a cell field (Zhang et al. 2023 eq. 7): d(phi)/dtau = div(D grad phi), zero flux at every
  * boundary, implicit Euler in pseudo-time to T = b^2/4 in n_steps steps. Conserves sum(phi V) to
  * round-off whatever the linear solver tolerance (flux-form update). D is 1 everywhere, or with
- * d_rule the seed's rule D = 0.001 in cells larger than 4 d (d = particle diameter). */
+ * d_rule Zhang et al.'s rule D = 0.001 in cells larger than 4 d (d = particle diameter). */
 typedef struct cdc_diffusion_params {
     double bandwidth;         /* b > 0 (metres) */
     int n_steps;              /* pseudo-time steps (default 4 when 0) */

@@ -23,7 +23,7 @@ g = 9.81 m/s2, tube cross-section A = 10 x 10 mm.
    the same equation. Solved for eps by bisection on (0.2, 1).
 2. eps_richardson_zaki(U): Richardson & Zaki (Trans. Instn Chem. Engrs 32, 35 (1954)),
    eps = (U/u_t)^(1/n), with
-   - the terminal velocity of Khan & Richardson (Chem. Eng. Commun. 62, 135 (1987); the seed's
+   - the terminal velocity of Khan & Richardson (Chem. Eng. Commun. 62, 135 (1987); Zhang et al.'s
      formula, which it attributes to Ganguly 1990): Re_t = (2.33 Ar^0.018 - 1.53 Ar^-0.016)^13.3,
      Ar = (rho_p/rho_f - 1) g d^3/nu^2, u_t = Re_t nu/d;
    - the exponent of Garside & Al-Dibouni (Ind. Eng. Chem. Process Des. Dev. 16, 206 (1977)):

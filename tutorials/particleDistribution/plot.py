@@ -22,7 +22,7 @@ import numpy as np  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RES = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "results")
-ALPHA_MAX = 0.63  # random close packing, the colour/axis limit of the seed's figures
+ALPHA_MAX = 0.63  # random close packing, the colour/axis limit of Zhang et al.'s (2023) figures
 
 # (file tag, label) in the order of the figures
 METHODS = [
@@ -113,7 +113,7 @@ def fig7():
         ax.set_ylim(0, ALPHA_MAX)
         label_panel(ax, label, "x/d", "alpha_p")
     axes[0].legend(fontsize=7, loc="upper right")
-    fig.suptitle("alpha_p along y = 0 (row of cells nearest y = 0, averaged over z); axis clipped at 0.63 as in the seed", fontsize=10)
+    fig.suptitle("alpha_p along y = 0 (row of cells nearest y = 0, averaged over z); axis clipped at 0.63 as in Zhang et al. (2023)", fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.97))
     fig.savefig(path("fig7_profiles.png"), dpi=110)
     plt.close(fig)

@@ -1,5 +1,5 @@
 /*
- * stability_core.c -- core-level scenes of the stability suite (issue 5): every registered
+ * stability_core.c -- core-level scenes of the stability suite: every registered
  * void-fraction method (plus the smoothing variants) against
  *
  *   coarse      a liquid-fluidized column, random non-overlapping particles (alpha_p ~ 0.3 in the bed,

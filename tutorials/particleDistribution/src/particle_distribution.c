@@ -10,14 +10,14 @@
  * Output (in the output directory, default "results"):
  *   summary.csv                         one row per (method, mesh)
  *   profile_<method>[_n<k>]_M<j>.csv     alpha_p along the row of cells nearest y = 0
- *   histogram_M2.csv                    alpha_p histograms at dx/d = 1 (seed Fig. 8)
- *   field_<method>[_n<k>]_M2.csv        the mid-z layer of alpha_p at dx/d = 1 (seed Fig. 6)
+ *   histogram_M2.csv                    alpha_p histograms at dx/d = 1 (Zhang et al. 2023 Fig. 8)
+ *   field_<method>[_n<k>]_M2.csv        the mid-z layer of alpha_p at dx/d = 1 (Zhang et al. 2023 Fig. 6)
  *   particles.csv                       the particle centres (units of d)
  *
  * Usage: particle_distribution [-o DIR] [-m MESHES] [-s SEED] [-w]
  *   -m 1234  meshes to run (digits 1-4, default all), -s SEED (default 20231113)
  *   -w       wall-mirrored expansion kernels (bigParticle n, twoGrid, gaussian); default off, as in
- *            the seed (CFDEM's kernels are truncated at walls)
+ *            Zhang et al. 2023 (CFDEM's kernels are truncated at walls)
  */
 #include "../../../src/core/coarse_dem.h"
 #include "../../../src/core/tools/box_mesh.h"
@@ -305,7 +305,7 @@ int main(int argc, char **argv)
             fclose(pf);
 
             if (mj == 2) {
-                /* histogram (seed Fig. 8) and the mid-z field (seed Fig. 6) */
+                /* histogram (Zhang et al. 2023 Fig. 8) and the mid-z field (Zhang et al. 2023 Fig. 6) */
                 long *cnt = calloc((size_t)NBIN, sizeof(long));
                 for (int c = 0; c < nc; ++c) {
                     if (!in_stats[c]) continue;
