@@ -56,10 +56,10 @@ static void run(const char *name, void (*fn)(void))
     check_failures_in_test = 0;
     fn();
     if (check_failures_in_test) {
-        printf("FAIL core/%s\n", name);
+        printf("FAIL: core/%s\n", name);
         ++n_fail;
     } else {
-        printf("PASS core/%s\n", name);
+        printf("PASS: core/%s\n", name);
         ++n_pass;
     }
     fflush(stdout);

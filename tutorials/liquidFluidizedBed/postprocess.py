@@ -132,7 +132,7 @@ def main():
     name = os.path.basename(os.path.normpath(a.run))
     dumps = read_dumps(a.run, a.demdt)
     if not dumps:
-        print("FAIL %s: no particle dumps in %s/post" % (name, a.run))
+        print("FAIL: %s: no particle dumps in %s/post" % (name, a.run))
         return 1
     vs = float(np.sum(math.pi / 6 * (2 * dumps[0][1]["radius"]) ** 3))
     n0 = len(dumps[0][1]["z"])
@@ -146,7 +146,7 @@ def main():
     s = np.array(series)
     win = (s[:, 0] >= a.tstart - 1e-9) & (s[:, 0] <= a.tend + 1e-9)
     if win.sum() < 2 * NB:
-        print("FAIL %s: only %d particle dumps in the window %g..%g s" % (name, win.sum(), a.tstart, a.tend))
+        print("FAIL: %s: only %d particle dumps in the window %g..%g s" % (name, win.sum(), a.tstart, a.tend))
         return 1
     eps = s[win, 2]
     eps_sim, eps_sem = float(eps.mean()), batch_sem(eps)
@@ -176,7 +176,7 @@ def main():
     ta, pa = read_fv(fv("pAbove"))
     m = min(len(ti), len(ta))
     if m == 0 or np.max(np.abs(ti[:m] - ta[:m])) > 1e-9:
-        print("FAIL %s: pressure samples missing or not at the same times" % name)
+        print("FAIL: %s: pressure samples missing or not at the same times" % name)
         return 1
     rho_f, g = ref.RHO_F, ref.G
     dp = rho_f * (pi_[:m] - pa[:m]) - rho_f * g * Z_ABOVE

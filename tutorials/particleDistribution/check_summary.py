@@ -39,7 +39,7 @@ def main():
             header = next(reader)
             rows = [dict(zip(header, r)) for r in reader if r]
     except (OSError, StopIteration) as e:
-        print("FAIL particleDistribution/read %s: %s" % (path, e))
+        print("FAIL: particleDistribution/read %s: %s" % (path, e))
         return 2
     report(header == HEADER, "header is exactly %s" % ",".join(HEADER))
     if header != HEADER:
@@ -50,7 +50,7 @@ def main():
                 if key != "n_expand":
                     r[key] = float(r[key])
     except ValueError as e:
-        print("FAIL particleDistribution/numbers in %s: %s" % (path, e))
+        print("FAIL: particleDistribution/numbers in %s: %s" % (path, e))
         return 2
 
     def find(method, n_expand, dx):

@@ -167,7 +167,7 @@ def main(argv):
         elif not os.path.exists(os.path.join(run, "post", "particle.txt")):
             continue
         if rc != 0:
-            print(f"FAIL dragCurve/{name}: coarseDemFoam exited with {rc} (see {run}/log.coarseDemFoam)")
+            print(f"FAIL: dragCurve/{name}: coarseDemFoam exited with {rc} (see {run}/log.coarseDemFoam)")
             fails += 1
             continue
         u, drift, nwarn, wall = analyse(run)

@@ -21,7 +21,7 @@
  *     |fluid total + particle total| / sum_i |f_i| <= 1e-12;
  *   - limiter bookkeeping: cells counted == cells above alphaMax before limiting, moved volume >= the
  *     excess above alphaMax, moved > 0 iff a cell was over.
- * Prints one "PASS|FAIL <scene>: <measured>" line per case and ends with "N passed, N failed".
+ * Prints one "PASS|FAIL: <scene>: <measured>" line per case and ends with "N passed, N failed".
  * Usage: stability_core [--quick]   (quick: fewer particles in the d/dx = 0.25 column)
  */
 #include "coarse_dem.h"
@@ -499,12 +499,12 @@ static void report(const char *scene, int pass, const result *r, const char *ext
 {
     if (pass) ++n_pass; else ++n_fail;
     if (!r->have_alpha) {
-        printf("%s %s: limiter over %d cells (excess %.3e m3) stopped with ERROR %s%s%s\n", pass ? "PASS" : "FAIL",
+        printf("%s: %s: limiter over %d cells (excess %.3e m3) stopped with ERROR %s%s%s\n", pass ? "PASS" : "FAIL",
                scene, r->n_over, r->excess, r->err, extra ? extra : "", r->outside ? " particles outside!" : "");
         fflush(stdout);
         return;
     }
-    printf("%s %s: alpha_f [%.6f, %.6f] nan %d, solid volume rel.err %.1e/%.1e (pre/post limiter), "
+    printf("%s: %s: alpha_f [%.6f, %.6f] nan %d, solid volume rel.err %.1e/%.1e (pre/post limiter), "
            "momentum rel.err %.1e/%.1e (explicit/implicit), limiter %d cells moved %.3e m3 (excess %.3e)%s%s%s%s\n",
            pass ? "PASS" : "FAIL", scene, r->af_min, r->af_max, r->nan, r->vol_rel_pre, r->vol_rel_post,
            r->mom_explicit, r->mom_implicit, r->n_limited, r->moved, r->excess, extra ? extra : "",
@@ -533,10 +533,10 @@ static void scene_coarse(double ratio, int cap, const mcase *cases, int nc_cases
     const int w = (int)fmax(10, ceil(4 * ratio));
     box_mesh b;
     const double lo[3] = {0, 0, 0}, hi[3] = {w * dx, w * dx, 4 * w * dx};
-    if (box_mesh_create(&b, w, w, 4 * w, lo, hi, COLUMN_KINDS, 0.0)) { printf("FAIL coarse: mesh\n"); ++n_fail; return; }
+    if (box_mesh_create(&b, w, w, 4 * w, lo, hi, COLUMN_KINDS, 0.0)) { printf("FAIL: coarse: mesh\n"); ++n_fail; return; }
     cdc_context *ctx = NULL;
     if (cdc_context_create(&b.mesh, &ctx) != CDC_OK) {
-        printf("FAIL coarse: context %s\n", cdc_create_error()); ++n_fail; box_mesh_destroy(&b); return;
+        printf("FAIL: coarse: context %s\n", cdc_create_error()); ++n_fail; box_mesh_destroy(&b); return;
     }
     unsigned long long s = 1000 + (unsigned long long)(100 * ratio);
     pset ps;

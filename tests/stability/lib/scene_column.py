@@ -88,7 +88,7 @@ def main():
                 if line.startswith("Time = "):
                     last = line.split()[2]
         extra.append("stopped at t = %s s of %s s" % (last, p.get("END_TIME", "?")))
-    print("%s %s: %s%s" % ("PASS" if ok else "FAIL", a.scene, summary, ("; " + ", ".join(extra)) if extra else ""))
+    print("%s: %s: %s%s" % ("PASS" if ok else "FAIL", a.scene, summary, ("; " + ", ".join(extra)) if extra else ""))
     return 0 if ok else 1
 
 

@@ -39,7 +39,7 @@ def dtcheck(case, scene, expect):
     m = re.search(r"ESTIMATE (\S+) (\S+) (\S+) (\S+) (\S+) (\S+) (\S+) (\S+) (\S+) valid (\d)", log)
     problems = []
     if not m:
-        print("FAIL %s: no ESTIMATE line from dtCheckTest (exit %d): %s" % (scene, rc, log.strip()[-300:]))
+        print("FAIL: %s: no ESTIMATE line from dtCheckTest (exit %d): %s" % (scene, rc, log.strip()[-300:]))
         return 1
     dt, tR, tH, v, n, rmin, rhomin, rhomax, Emax = (float(x) for x in m.groups()[:9])
     valid = m.group(10) == "1"
@@ -49,7 +49,7 @@ def dtcheck(case, scene, expect):
             ("fatal" if "FOAM FATAL" in log else "other")
         reason = re.search(r"Hertz times: (.*)", log)
         ok = got == "skip" and rc == 0
-        print("%s %s: %d particles -> %s (expected skip, exit %d): %s" % ("PASS" if ok else "FAIL", scene, n, got, rc,
+        print("%s: %s: %d particles -> %s (expected skip, exit %d): %s" % ("PASS" if ok else "FAIL", scene, n, got, rc,
                                                                       reason.group(1).strip() if reason else log[-200:]))
         return 0 if ok else 1
     params = dict(l.rstrip("\n").split("=", 1) for l in open(os.path.join(case, "case.params")) if "=" in l)
@@ -73,7 +73,7 @@ def dtcheck(case, scene, expect):
     elif rc != 0:
         problems.append("exit status %d" % rc)
     frac = dt / min(tR, tH)
-    print("%s %s: dt %.3g s = %.3f x min(t_R %.4g s, t_H %.4g s at %.3g m/s) -> %s (expected %s); estimate vs "
+    print("%s: %s: dt %.3g s = %.3f x min(t_R %.4g s, t_H %.4g s at %.3g m/s) -> %s (expected %s); estimate vs "
           "reference rel. err %.1e/%.1e%s" % ("FAIL" if problems else "PASS", scene, dt, frac, tR, tH, v, got, expect,
                                              eR, eH, ("; " + "; ".join(problems)) if problems else ""))
     return 1 if problems else 0
@@ -102,7 +102,7 @@ def collision(d, scene, E, dt, mode, outcome=None):
     else:
         ok = outcome == "fatal"
         meas += "; the time-step check %s this step" % ("refuses" if ok else "does NOT refuse (%s)" % outcome)
-    print("%s %s: %s" % ("PASS" if ok else "FAIL", scene, meas))
+    print("%s: %s: %s" % ("PASS" if ok else "FAIL", scene, meas))
     return 0 if ok else 1
 
 

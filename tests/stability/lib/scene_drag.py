@@ -93,7 +93,7 @@ def main():
         ok = ok and w_ok
         parts.append(desc + " (fluid side)")
     parts.append(summary)
-    print("%s %s: %s" % ("PASS" if ok else "FAIL", a.scene, "; ".join(parts)))
+    print("%s: %s: %s" % ("PASS" if ok else "FAIL", a.scene, "; ".join(parts)))
     return 0 if ok else 1
 
 

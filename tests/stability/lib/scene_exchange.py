@@ -56,9 +56,9 @@ def main():
         problems.append("explicit coupling: impulses differ by %.2e x exchange > 1e-12" % ee["max"])
     line = "%s: %s; %s" % (scene, te, ti)
     if problems:
-        print("FAIL " + line + "; " + "; ".join(problems))
+        print("FAIL: " + line + "; " + "; ".join(problems))
         return 1
-    print("PASS " + line)
+    print("PASS: " + line)
     return 0
 
 

@@ -38,7 +38,7 @@ def refused(par, scene, cause=DECOMPOSITION_MISMATCH):
     rc = stablib.exit_status(par)
     said = stablib.log_has(par, cause)
     ok = rc != 0 and said
-    print("%s %s: np=2 exit status %d, %s" % ("PASS" if ok else "FAIL", scene, rc,
+    print("%s: %s: np=2 exit status %d, %s" % ("PASS" if ok else "FAIL", scene, rc,
           ("stopped saying '%s'" % cause) if said else ("no message '%s': " % cause)
           + stablib.failure_reason(par)))
     return 0 if ok else 1
@@ -125,7 +125,7 @@ def main():
                     dx = max(math.sqrt(sum((a - b) ** 2 for a, b in zip(d[last][i][:3], ds[last][i][:3])))
                              for i in d[last] if i in ds[last])
                     parts.append("max particle position difference at the end %.2e m" % dx)
-    print("%s %s: %s" % ("PASS" if ok else "FAIL", scene, ", ".join(parts)))
+    print("%s: %s: %s" % ("PASS" if ok else "FAIL", scene, ", ".join(parts)))
     return 0 if ok else 1
 
 

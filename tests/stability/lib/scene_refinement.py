@@ -35,7 +35,7 @@ def main():
         p = stablib.params(c)
         r = rises(c)
         if not r:
-            print("FAIL %s: no particle dumps in %s (run failed?)" % (a.label, c))
+            print("FAIL: %s: no particle dumps in %s (run failed?)" % (a.label, c))
             return
         dt = float(p["COUPLING_INTERVAL"]) * float(p["DEM_TIMESTEP"])
         rows.append((dt, r[max(r)], r))
@@ -45,13 +45,13 @@ def main():
         mid = " / ".join("%.4f" % (1e3 * r[s]) for s in (2400, 4800, 7200) if s in r)
         print("  %-10g %-11.4f %-11s %s" % (dt, 1e3 * rise, diff, mid))
     if len(rows) < 3:
-        print("FAIL %s: needs at least three steps" % a.label)
+        print("FAIL: %s: needs at least three steps" % a.label)
         return
     first = abs(rows[1][1] - rows[0][1])
     last = abs(rows[-1][1] - rows[-2][1])
     rel = last / max(abs(rows[-1][1]), 1e-12)
     ok = rel <= a.max_last and last < first
-    print("%s %s: bed rise %.4f mm at the finest step %g s; finest difference %.4f mm (%.2f %% of the rise, "
+    print("%s: %s: bed rise %.4f mm at the finest step %g s; finest difference %.4f mm (%.2f %% of the rise, "
           "bound %.1f %%), coarsest %.4f mm" %
           ("PASS" if ok else "FAIL", a.label, 1e3 * rows[-1][1], rows[-1][0], 1e3 * last, 100 * rel,
            100 * a.max_last, 1e3 * first))

@@ -43,7 +43,7 @@ def main():
     dw, ds = stablib.dumps(a.whole), stablib.dumps(a.split)
     common = sorted(set(dw) & set(ds))
     if not common:
-        print("FAIL %s: no common DEM dump" % a.scene)
+        print("FAIL: %s: no common DEM dump" % a.scene)
         return 1
     step = common[-1]
     rw, rs = dw[step], ds[step]
@@ -67,7 +67,7 @@ def main():
         parts.append("%s at t = %s: %.2e" % (name, tw, d))
         ok = ok and d <= a.tol
     parts.append("tolerance %.0e; " % a.tol + summary)
-    print("%s %s: %s" % ("PASS" if ok else "FAIL", a.scene, "; ".join(parts)))
+    print("%s: %s: %s" % ("PASS" if ok else "FAIL", a.scene, "; ".join(parts)))
     return 0 if ok else 1
 
 

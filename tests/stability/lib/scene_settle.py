@@ -92,7 +92,7 @@ def main():
             r["ok"] = r["ok"] and w_ok
             line += "; " + desc
     line += "; " + r["summary"]
-    print("%s %s: %s" % ("PASS" if r["ok"] else "FAIL", a.scene, line))
+    print("%s: %s: %s" % ("PASS" if r["ok"] else "FAIL", a.scene, line))
     return 0 if r["ok"] else 1
 
 

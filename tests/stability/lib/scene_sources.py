@@ -45,7 +45,7 @@ def main():
         t0, tot0, sc0, pk0 = source(plain, name)
         t1, tot1, sc1, pk1 = source(smoothed, name)
     except (OSError, ValueError, IndexError) as e:
-        print("FAIL %s: %s unreadable: %s; %s" % (scene, name, e, "; ".join(parts)))
+        print("FAIL: %s: %s unreadable: %s; %s" % (scene, name, e, "; ".join(parts)))
         return 1
     diff = max(abs(a - b) for a, b in zip(tot0, tot1)) / max(sc0, 1e-300)
     parts.append("t=%s: sum %s alpha-only (%.6e %.6e %.6e), smoothed (%.6e %.6e %.6e), differ by %.1e of "
@@ -60,7 +60,7 @@ def main():
     if not (pk0 > 0 and pk1 < 0.75 * pk0):
         ok = False
         parts.append("the smoothed source's peak is not below 0.75 of the unsmoothed one")
-    print("%s %s: %s" % ("PASS" if ok else "FAIL", scene, ", ".join(parts)))
+    print("%s: %s: %s" % ("PASS" if ok else "FAIL", scene, ", ".join(parts)))
     return 0 if ok else 1
 
 
