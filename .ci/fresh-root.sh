@@ -13,7 +13,12 @@ command -v debootstrap > /dev/null || apt-get install -y --no-install-recommends
 umount -l "$R/proc" "$R/dev" 2>/dev/null
 rm -rf "$R"
 t0=$(date +%s)
-debootstrap --variant=minbase bookworm "$R" http://deb.debian.org/debian > "$R.debootstrap.log" 2>&1 ||
+# the archive this machine's apt uses for bookworm main (a mirror or snapshot stays in use)
+archive="$(apt-get indextargets --format '$(SITE)' 'Created-By: Packages' 'Codename: bookworm' 'Component: main' 2>/dev/null | head -n1)"
+[ -n "$archive" ] || { echo "fresh-root: apt on this machine has no 'deb' entry for bookworm main: no archive to" \
+                            "bootstrap from (add one to /etc/apt/sources.list and run apt-get update)"; exit 1; }
+echo "fresh-root: archive $archive"
+debootstrap --variant=minbase bookworm "$R" "$archive" > "$R.debootstrap.log" 2>&1 ||
     { echo "fresh-root: debootstrap failed ($R.debootstrap.log)"; exit 1; }
 echo "fresh-root: debootstrap $(( $(date +%s) - t0 )) s"
 mount --bind /proc "$R/proc" && mount --bind /dev "$R/dev" || exit 1
