@@ -172,6 +172,8 @@ int32_t cdc_kernels_count(const cdc_kernels *k);
 const int32_t *cdc_kernels_offsets(const cdc_kernels *k);
 const int32_t *cdc_kernels_cells(const cdc_kernels *k);
 const double *cdc_kernels_weights(const cdc_kernels *k);
+/* Host cell of each particle of the last build (local particles first; -1: outside this mesh). */
+const int32_t *cdc_kernels_hosts(const cdc_kernels *k);
 /* Wall time of the last build: locating the particles, and building their kernels. */
 void cdc_kernels_timing(const cdc_kernels *k, double *seconds_locate, double *seconds_kernel);
 /* Particles found outside the mesh in the last build: count and their ids. */

@@ -317,6 +317,7 @@ cdc_context *cdc_kernels_context(const cdc_kernels *k) { return k ? k->ctx : NUL
 const int32_t *cdc_kernels_offsets(const cdc_kernels *k) { return k ? k->offsets.v : NULL; }
 const int32_t *cdc_kernels_cells(const cdc_kernels *k) { return k ? k->cells.v : NULL; }
 const double *cdc_kernels_weights(const cdc_kernels *k) { return k ? k->weights.v : NULL; }
+const int32_t *cdc_kernels_hosts(const cdc_kernels *k) { return k ? k->hosts.v : NULL; }
 
 int32_t cdc_kernels_outside(const cdc_kernels *k, const int64_t **ids)
 {

@@ -63,6 +63,23 @@ m = re.findall(r"^End: Coupling: particles (\d+), .*?rel\. err ([0-9.eE+-]+)\)",
 ok = bool(m) and int(m[-1][0]) == 9240 and float(m[-1][1]) <= 1e-12
 print(("PASS" if ok else "FAIL") + f": {tag}: 9240 particles kept, solid volume rel. err {m[-1][1] if m else '?'}")
 status |= not ok
+# the particles as a lagrangian cloud at the last write time (writeParticleCloud, default on)
+last_w = sorted((d for d in os.listdir(run) if re.fullmatch(r"[0-9.e-]+", d) and float(d) > 0), key=float)[-1]
+cloud = os.path.join(run, last_w, "lagrangian", "particles")
+def count(name):
+    path = os.path.join(cloud, name)
+    if not os.path.exists(path): return -1
+    mm = re.search(rb"\n(\d+)\s*[({]", open(path, "rb").read())
+    return int(mm.group(1)) if mm else -1
+counts = {f: count(f) for f in ("positions", "d", "U", "f", "id")}
+ok = all(c == 9240 for c in counts.values())
+print(("PASS" if ok else "FAIL") + f": {tag}: particle cloud at t = {last_w} ({cloud}) holds 9240 entries in each of "
+      + ", ".join(f"{k} ({v})" for k, v in counts.items()))
+status |= not ok
+png = os.path.join(run, "results", "bed.png")
+ok = os.path.exists(png) and os.path.getsize(png) > 10000
+print(("PASS" if ok else "FAIL") + f": {tag}: the picture of the bed {png} " + ("written" if ok else "missing"))
+status |= not ok
 # superficial inflow above the bed (top layer of cells): alpha * Uz = the inlet velocity
 last = sorted((d for d in os.listdir(run) if re.fullmatch(r"[0-9.e-]+", d) and float(d) > 0), key=float)[-1]
 def rd(path):

@@ -1,4 +1,5 @@
 #include "coarseDemCoupling.H"
+#include "particleCloud.H"
 #include "demTimeStepCheck.H"
 #include "demUnitsCheck.H"
 #include "fvc.H"
@@ -53,6 +54,7 @@ coarseDemCoupling::coarseDemCoupling
     implicitDrag_(dict_.lookupOrDefault<Switch>("implicitDrag", true)),
     implicitParticleDrag_(dict_.lookupOrDefault<Switch>("implicitParticleDrag", true)),
     demRestart_(dict_.lookupOrDefault<Switch>("demRestart", true)),
+    writeParticleCloud_(dict_.lookupOrDefault<Switch>("writeParticleCloud", true)),
     allowParticleLoss_(dict_.lookupOrDefault<Switch>("allowParticleLoss", false)),
     cgFactor_(dict_.lookupOrDefault<scalar>("coarseGrainingFactor", 1)),
     alphaRelaxationTime_(dict_.lookupOrDefault<scalar>("alphaRelaxationTime", 0)),
@@ -345,11 +347,25 @@ void coarseDemCoupling::setFluidFraction(volScalarField& alpha)
 
 void coarseDemCoupling::write()
 {
-    if (demRestart_ && mesh_.time().writeTime())
+    if (!mesh_.time().writeTime()) return;
+    if (demRestart_)
     {
         const fileName dir = mesh_.time().globalPath()/mesh_.time().timeName();
         if (Pstream::master()) mkDir(dir);
         dem_->writeRestart(dir/"dem.restart");
+    }
+    if (writeParticleCloud_)
+    {
+        // the particles of this step's coupling, with the force it gave each (drag and the others)
+        const label n = particles_.size();
+        scalarField d(n);
+        vectorField f(n);
+        for (label i = 0; i < n; ++i)
+        {
+            d[i] = 2*particles_.radius[i];
+            f[i] = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
+        }
+        writeParticleCloud(mesh_, "particles", particles_, cdc_kernels_hosts(voidFraction_.kernels()), d, f);
     }
 }
 
