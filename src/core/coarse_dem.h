@@ -258,6 +258,9 @@ typedef struct cdc_halo {
     /* values[0..n) summed over all ranks, in place, with the same result bits on every rank */
     int (*sum)(void *user, double *values, int n);
     void *user;                /* passed to the callbacks */
+    /* values[0..n) replaced by their maximum over all ranks; may be NULL (then the size-aware
+     * diffusion, whose diameter classes start at the smallest diameter of all ranks, refuses) */
+    int (*max)(void *user, double *values, int n);
 } cdc_halo;
 
 /* Set (or with NULL clear) the halo of a context; returns CDC_ERR_ARGUMENT on inconsistent input. */
@@ -265,7 +268,9 @@ cdc_status cdc_context_set_halo(cdc_context *ctx, const cdc_halo *halo);
 
 /* Size-aware diffusion for polydisperse beds: particles are grouped in diameter classes (width
  * class_ratio, e.g. 1.1 = 10 %), each class's PCM field is smoothed with its own bandwidth
- * b_k = bandwidth_over_d * d_k and the classes are summed. Writes alpha_p. */
+ * b_k = bandwidth_over_d * d_k and the classes are summed. Writes alpha_p. p: the particles of the
+ * kernels' last build (local, then ghosts). Across ranks (a halo with sum and max) the classes and
+ * their mean diameters are those of all ranks' particles, so the result is the serial one. */
 cdc_status cdc_alpha_p_diffused_by_size(cdc_context *ctx, const cdc_kernels *k, const cdc_particles *p,
                                         double bandwidth_over_d, double class_ratio,
                                         const cdc_diffusion_params *base, double *alpha_p,

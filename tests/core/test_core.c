@@ -879,7 +879,7 @@ static void test_diffusion_halo(void)
     int ncls = 0;
     CHECK(cdc_kernels_create(pb.t.ctx, "centre", NULL, &k) == CDC_OK && cdc_kernels_build(k, &p) == CDC_OK, "kernels");
     CHECK(cdc_alpha_p_diffused_by_size(pb.t.ctx, k, &p, 6.0, 1.1, &base, a, &ncls) == CDC_ERR_UNSUPPORTED,
-          "size-aware diffusion with a halo was not refused");
+          "size-aware diffusion with a halo without a max callback was not refused");
     cdc_kernels_destroy(k);
     /* bad halo input is refused with a message */
     cdc_halo bad = h;
@@ -1033,7 +1033,7 @@ typedef struct {
     pthread_cond_t cv;
     int waiting, generation, timed_out;
     double face[2][TR_NF];  /* each rank's cell values at the split */
-    double sum[2][8];       /* each rank's partial sums */
+    double sum[2][160];     /* each rank's partial sums (size-aware diffusion sums its classes) */
 } two_ranks;
 typedef struct { two_ranks *w; int rank; const box_mesh *b; } rank_halo;
 
@@ -1076,26 +1076,44 @@ static int two_ranks_exchange(void *user, const double *x, double *nbr)
 static int two_ranks_sum(void *user, double *values, int n)
 {
     rank_halo *h = user;
-    if (n > 8) return -1;
+    if (n > 160) return -1;
     for (int i = 0; i < n; ++i) h->w->sum[h->rank][i] = values[i];
     if (two_ranks_barrier(h->w)) return -1;
     for (int i = 0; i < n; ++i) values[i] = h->w->sum[0][i] + h->w->sum[1][i]; /* same bits on both */
     return two_ranks_barrier(h->w);
 }
 
+static int two_ranks_max(void *user, double *values, int n)
+{
+    rank_halo *h = user;
+    if (n > 160) return -1;
+    for (int i = 0; i < n; ++i) h->w->sum[h->rank][i] = values[i];
+    if (two_ranks_barrier(h->w)) return -1;
+    for (int i = 0; i < n; ++i) values[i] = fmax(h->w->sum[0][i], h->w->sum[1][i]);
+    return two_ranks_barrier(h->w);
+}
+
 typedef struct {
     cdc_context *ctx;
     double *field;
-    int diffuse; /* 0: limiter, 1: diffusion */
+    int diffuse; /* 0: limiter, 1: diffusion, 2: size-aware diffusion of `particles` with `kernels` */
     cdc_status st;
     double moved;
     int32_t nlim;
+    const cdc_kernels *kernels;
+    const cdc_particles *particles;
 } rank_job;
 
 static void *rank_run(void *arg)
 {
     rank_job *j = arg;
-    if (j->diffuse) {
+    if (j->diffuse == 2) {
+        cdc_diffusion_params prm = {0};
+        prm.tolerance = 1e-13;
+        int ncls = 0;
+        j->st = cdc_alpha_p_diffused_by_size(j->ctx, j->kernels, j->particles, 3.0, 1.1, &prm, j->field, &ncls);
+        j->nlim = ncls;
+    } else if (j->diffuse) {
         cdc_diffusion_params prm = {0};
         prm.bandwidth = 3 * CUBE_DX;
         prm.tolerance = 1e-13;
@@ -1134,7 +1152,7 @@ static void test_two_ranks(void)
             coeff[f] = dx; /* |S_f| / distance between the cell centres */
             vol[f] = dx * dx * dx;
         }
-        const cdc_halo h = {TR_NF, cells[q], coeff, vol, two_ranks_exchange, two_ranks_sum, &rh[q]};
+        const cdc_halo h = {TR_NF, cells[q], coeff, vol, two_ranks_exchange, two_ranks_sum, &rh[q], two_ranks_max};
         CHECK(cdc_context_set_halo(ch[q], &h) == CDC_OK, "halo %d: %s", q, cdc_last_error(ch[q]));
     }
     const size_t nc = (size_t)s.mesh.n_cells, nh = nc / 2;
@@ -1188,6 +1206,74 @@ static void test_two_ranks(void)
             CHECK(fabs(job[0].moved + job[1].moved - js.moved) <= 1e-14 * js.moved, "moved %g + %g vs serial %g",
                   job[0].moved, job[1].moved, js.moved);
         }
+    }
+    /* size-aware diffusion: big particles on rank 0 only, small and big on rank 1, so a rank's own
+     * classes would differ from the serial ones (rank 0 would start them at the big diameter) */
+    {
+        enum { NPB = 40 };
+        static double px[3 * NPB], pr[NPB];
+        static int64_t pid[NPB];
+        unsigned long long sd = 5;
+        for (int n = 0; n < NPB; ++n) {
+            const int right = n % 2;
+            pr[n] = (right && n % 4 == 1 ? 0.15 : 0.3) * dx;
+            px[3 * n] = (right ? TR_NX / 2 : 0) * dx + (0.5 + (int)(rnd(&sd) * (TR_NX / 2 - 0.01))) * dx;
+            px[3 * n + 1] = (0.5 + (int)(rnd(&sd) * (TR_NY - 0.01))) * dx;
+            px[3 * n + 2] = (0.5 + (int)(rnd(&sd) * (TR_NZ - 0.01))) * dx;
+            pid[n] = n;
+        }
+        cdc_particles all = {NPB, px, pr, pid, NULL};
+        cdc_kernels *ks = NULL, *kh[2] = {NULL, NULL};
+        CHECK(cdc_kernels_create(cs, "centre", NULL, &ks) == CDC_OK && cdc_kernels_build(ks, &all) == CDC_OK,
+              "serial kernels: %s", cdc_last_error(cs));
+        static double hx[2][3 * NPB], hr[2][NPB];
+        static int64_t hid[2][NPB];
+        int hn[2] = {0, 0};
+        for (int n = 0; n < NPB; ++n) {
+            const int q = px[3 * n] < TR_NX / 2 * dx ? 0 : 1;
+            memcpy(hx[q] + 3 * hn[q], px + 3 * n, 3 * sizeof(double));
+            hr[q][hn[q]] = pr[n];
+            hid[q][hn[q]++] = pid[n];
+        }
+        cdc_particles hp[2], none = {0, NULL, NULL, NULL, NULL};
+        for (int q = 0; q < 2; ++q) {
+            hp[q] = (cdc_particles){hn[q], hx[q], hr[q], hid[q], NULL};
+            /* centre kernels: each whole on its own rank (no ghosts), normalised by their own sums */
+            CHECK(cdc_kernels_create(ch[q], "centre", NULL, &kh[q]) == CDC_OK &&
+                      cdc_kernels_build_raw(kh[q], &hp[q], &none) == CDC_OK &&
+                      cdc_kernels_normalise(kh[q], cdc_kernels_raw_sums(kh[q]), hid[q]) == CDC_OK,
+                  "rank %d kernels: %s", q, cdc_last_error(ch[q]));
+        }
+        double *ser = calloc(nc, sizeof(double)), *pa[2] = {calloc(nh, sizeof(double)), calloc(nh, sizeof(double))};
+        rank_job js = {cs, ser, 2, CDC_OK, 0, 0, ks, &all};
+        rank_job job[2] = {{ch[0], pa[0], 2, CDC_OK, 0, 0, kh[0], &hp[0]}, {ch[1], pa[1], 2, CDC_OK, 0, 0, kh[1], &hp[1]}};
+        rank_run(&js);
+        pthread_t other;
+        pthread_create(&other, NULL, rank_run, &job[1]);
+        rank_run(&job[0]);
+        pthread_join(other, NULL);
+        CHECK(!w.timed_out, "size-aware: the two ranks made different numbers of collective calls");
+        CHECK(js.st == CDC_OK && job[0].st == CDC_OK && job[1].st == CDC_OK, "size-aware: %s / %s / %s",
+              cdc_last_error(cs), cdc_last_error(ch[0]), cdc_last_error(ch[1]));
+        double worst = 0, peak = 0;
+        for (int k = 0; k < TR_NZ; ++k)
+            for (int j = 0; j < TR_NY; ++j)
+                for (int i = 0; i < TR_NX; ++i) {
+                    const double v = pa[i / (TR_NX / 2)][box_mesh_cell(&half[0], i % (TR_NX / 2), j, k)];
+                    worst = fmax(worst, fabs(v - ser[box_mesh_cell(&s, i, j, k)]));
+                    peak = fmax(peak, fabs(v));
+                }
+        printf("    two ranks, size-aware diffusion: %d classes (ranks %d, %d), max |np2 - serial| %.1e of the peak\n",
+               (int)js.nlim, (int)job[0].nlim, (int)job[1].nlim, worst / peak);
+        CHECK(js.nlim == 2 && job[0].nlim == 2 && job[1].nlim == 2, "classes: serial %d, ranks %d %d", (int)js.nlim,
+              (int)job[0].nlim, (int)job[1].nlim);
+        CHECK(worst <= 1e-9 * peak, "size-aware: two ranks differ from serial by %.2e of the peak", worst / peak);
+        free(ser);
+        free(pa[0]);
+        free(pa[1]);
+        cdc_kernels_destroy(ks);
+        cdc_kernels_destroy(kh[0]);
+        cdc_kernels_destroy(kh[1]);
     }
     free(serial);
     free(part[0]);

@@ -172,7 +172,7 @@ void Foam::coarseDemMesh::setHalo()
     exchange(mesh_.V().cdata(), haloNbrVolume_.data());
 
     cdc_halo h = {int32_t(haloCells_.size()), haloCells_.data(), haloCoeff_.data(), haloNbrVolume_.data(),
-                  &haloExchange, &haloSum, this};
+                  &haloExchange, &haloSum, this, &haloMax};
     check(cdc_context_set_halo(ctx_, &h), "processor faces for diffusion smoothing and the packing limiter");
 }
 
@@ -210,6 +210,16 @@ int Foam::coarseDemMesh::haloSum(void*, double* values, int n)
     List<scalar> v(n);
     std::copy(values, values + n, v.begin());
     Pstream::listCombineGather(v, plusEqOp<scalar>());
+    Pstream::listCombineScatter(v);
+    std::copy(v.begin(), v.end(), values);
+    return 0;
+}
+
+int Foam::coarseDemMesh::haloMax(void*, double* values, int n)
+{
+    List<scalar> v(n);
+    std::copy(values, values + n, v.begin());
+    Pstream::listCombineGather(v, maxEqOp<scalar>());
     Pstream::listCombineScatter(v);
     std::copy(v.begin(), v.end(), values);
     return 0;

@@ -189,16 +189,6 @@ void voidFraction::readSmoothing(const dictionary& dict)
             << "smoothExchangeFields in " << dict.name() << "/diffusionProps acts with smoothingModel"
             << " diffusion only; smoothingModel is " << sm << ": ignored" << endl;
     }
-    if (smoothing_ == smoothing::sizeAware && Pstream::parRun())
-    {
-        // Each rank would form its own diameter classes from its particles (different classes,
-        // bandwidths and numbers of diffusion solves per rank): not the serial smoothing.
-        FatalIOErrorInFunction(dict)
-            << "smoothingModel " << sm << " in " << dict.name() << " runs in serial only: the"
-            << " diameter classes are formed per rank" << nl
-            << "    run serial, or use smoothingModel diffusion (parallel) or a kernel method"
-            << exit(FatalIOError);
-    }
 }
 
 voidFraction::~voidFraction()
