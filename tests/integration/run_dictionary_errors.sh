@@ -99,6 +99,17 @@ check difelice_reynolds 's/GidaspowDrag/DiFeliceDrag/; $a DiFeliceDragProps { re
 check modelA_without_gradP 's/GidaspowDrag gradPForce/GidaspowDrag/' "lacks gradPForce, which modelType A needs"
 # virtual mass needs the fluid acceleration from the very first coupling (before the time loop)
 check_runs virtual_mass_first_step 's/GidaspowDrag gradPForce/GidaspowDrag gradPForce virtualMassForce/'
+# the species fields: one DEM type here, so alphaPBinned.type1 must hold alphaPBinned's values
+check_runs binned_species_fields '$a binnedSpeciesFields on;' \
+    "sed -i 's/^writeInterval .*/writeInterval 0.001;/' system/controlDict"
+species_case="$work/binned_species_fields"
+last="$species_case/$(cd "$species_case" 2>/dev/null && ls -d [0-9]* | grep -E '^[0-9.e+-]+$' | sort -g | tail -1)"
+if [ -n "$last" ] && [ -f "$last/alphaPBinned.type1" ] &&
+   cmp -s <(sed -n '/internalField/,$p' "$last/alphaPBinned") <(sed -n '/internalField/,$p' "$last/alphaPBinned.type1"); then
+    echo "PASS: binnedSpeciesFields: $(basename "$last")/alphaPBinned.type1 equals alphaPBinned (one DEM type)"; pass=$((pass+1))
+else
+    echo "FAIL: binnedSpeciesFields: no alphaPBinned.type1 equal to alphaPBinned in $last"; fail=$((fail+1))
+fi
 check gradP_and_Archimedes 's/GidaspowDrag gradPForce/GidaspowDrag gradPForce Archimedes/' "counted twice"
 check dem_script_missing 's|^demScript .*|demScript "DEM/nothere.liggghts";|' "DEM/nothere.liggghts\" not found"
 check dem_no_fix '' "defines no fix 'cfd' of style couple/coarse" "sed -i '/couple\/coarse/d' DEM/in.liggghts"

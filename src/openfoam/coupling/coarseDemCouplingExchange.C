@@ -7,6 +7,7 @@
 #include "coarseDemCoupling.H"
 #include "fvc.H"
 #include "noAliasFvc.H"
+#include "zeroGradientFvPatchFields.H"
 
 #include <cmath>
 
@@ -176,6 +177,36 @@ void coarseDemCoupling::binParticles
            reinterpret_cast<double*>(alphaPUsBinned().primitiveFieldRef().data()));
     alphaPBinned().correctBoundaryConditions();
     alphaPUsBinned().correctBoundaryConditions();
+    if (binnedSpecies_) binSpecies();
+}
+
+// alphaPBinned of each DEM atom type (binnedSpeciesFields): the species of a polydisperse bed apart,
+// counted in the cell of their centre as alphaPBinned is (their sum is alphaPBinned)
+void coarseDemCoupling::binSpecies()
+{
+    const label n = particles_.size();
+    label nTypes = 0;
+    for (label i = 0; i < n; ++i) nTypes = max(nTypes, label(particles_.type[i]));
+    reduce(nTypes, maxOp<label>());
+    const word t0 = mesh_.time().timeName();
+    for (label t = alphaPBinnedType_.size() + 1; t <= nTypes; ++t)
+    {
+        alphaPBinnedType_.append
+        (
+            new volScalarField
+            (
+                IOobject("alphaPBinned.type" + Foam::name(t), t0, mesh_, IOobject::NO_READ, IOobject::AUTO_WRITE),
+                mesh_, dimensionedScalar(dimless, Zero), zeroGradientFvPatchScalarField::typeName
+            )
+        );
+    }
+    std::vector<double> q(n);
+    forAll(alphaPBinnedType_, k)
+    {
+        for (label i = 0; i < n; ++i) q[i] = particles_.type[i] == k + 1 ? volume_[i] : 0.0;
+        spread(binKernels_, q.data(), 1, alphaPBinnedType_[k].primitiveFieldRef().data());
+        alphaPBinnedType_[k].correctBoundaryConditions();
+    }
 }
 
 // Output-only fields (no effect on the flow): particle volume x velocity, spread with the method's

@@ -128,7 +128,8 @@ void coarseDemCoupling::createOutputFields()
         );
     }
 
-    if (dict_.lookupOrDefault<Switch>("binnedParticleFields", false))
+    binnedSpecies_ = dict_.lookupOrDefault<Switch>("binnedSpeciesFields", false);
+    if (dict_.lookupOrDefault<Switch>("binnedParticleFields", false) || binnedSpecies_)
     {
         cdc_kernel_params prm = {};
         if (cdc_kernels_create(demMesh_.context(), "centre", &prm, &binKernels_) != CDC_OK)
