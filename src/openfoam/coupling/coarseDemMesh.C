@@ -203,25 +203,28 @@ bool Foam::coarseDemMesh::diffusesAcross(const fvPatch& fp)
     return isA<processorPolyPatch>(fp.patch()) && !isA<processorCyclicPolyPatch>(fp.patch());
 }
 
+// values[0..n) combined over the ranks on the master and sent to all: every rank gets the same bits
+template<class CombineOp>
+static void combineOverRanks(double* values, int n, const CombineOp& op)
+{
+    Foam::List<Foam::scalar> v(n);
+    std::copy(values, values + n, v.begin());
+    Foam::Pstream::listCombineGather(v, op);
+    Foam::Pstream::listCombineScatter(v);
+    std::copy(v.begin(), v.end(), values);
+}
+
 int Foam::coarseDemMesh::haloSum(void*, double* values, int n)
 {
-    // summed on the master and sent to all: every rank gets the same bits, so every rank's CG
-    // takes the same decisions (an allreduce need not give identical results on all ranks)
-    List<scalar> v(n);
-    std::copy(values, values + n, v.begin());
-    Pstream::listCombineGather(v, plusEqOp<scalar>());
-    Pstream::listCombineScatter(v);
-    std::copy(v.begin(), v.end(), values);
+    // the same bits on every rank, so every rank's CG takes the same decisions (an allreduce need
+    // not give identical results on all ranks)
+    combineOverRanks(values, n, plusEqOp<scalar>());
     return 0;
 }
 
 int Foam::coarseDemMesh::haloMax(void*, double* values, int n)
 {
-    List<scalar> v(n);
-    std::copy(values, values + n, v.begin());
-    Pstream::listCombineGather(v, maxEqOp<scalar>());
-    Pstream::listCombineScatter(v);
-    std::copy(v.begin(), v.end(), values);
+    combineOverRanks(values, n, maxEqOp<scalar>());
     return 0;
 }
 
