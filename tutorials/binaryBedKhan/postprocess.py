@@ -1,0 +1,492 @@
+#!/usr/bin/python3
+"""postprocess.py -- species-resolved layers and pressure of one binaryBedKhan run.
+
+    postprocess.py RUN -method M -U U -mode demo|short|full -tstart T0 -tend T1 -demdt DT -wall S
+
+Reads the particle dumps (RUN/post/dump*.liggghts: id, type, x, y, z, radius), the pressure on the
+inlet face (RUN/postProcessing/pInlet/*/surfaceFieldValue.dat), the window means of p and alphaP
+(pMean, alphaPMean of the fieldAverage function object) and alphaP at the last written time, and
+writes RUN/results/:
+
+- profiles.csv: per 1 mm cell layer z, each species' alpha_p (time mean over the window and its
+  batch-means standard error), their sum, the method's own alpha_p (alphaPMean, cross-section mean),
+  the pressure and its frictional part;
+- layers.csv: per species its plateau alpha_p (+- sem), interior, bottom, top, mean height (+- sem),
+  the alpha_p the pressure slope gives over the interior, and the references of its U;
+- bed.csv: the whole bed's frictional pressure drop (+- sem) against its buoyant weight, the mixing
+  region, the window, the wall time;
+- axis_end.csv: alpha_p along the tube's axis at the last dump / written time (Zhang et al. Fig. 16);
+- (bed.csv) the largest overlap of two particles, in % of the smaller one's diameter, at the
+  window's first, middle and last dump (a check that the DEM sees every contact);
+- (bed.csv) the largest difference in a cell between the solver's own per-species binning
+  (alphaPBinned.type1, .type2 of binnedSpeciesFields, at the last written time) and this script's
+  binning of the dump of that time (nan when the run has no such fields);
+- series.csv: per dump, each species' count, mean height, highest particle and count in the top cell
+  layer, and the pressure drop;
+- messages.txt: the WARNING lines (also printed).
+
+Definitions (independent of the void-fraction method: particles binned by the cell of their centre):
+- alpha_p,s(z_k) = sum of the volumes of species s whose centre lies in the cell layer k
+  (k dx <= z < (k + 1) dx, dx = 1 mm) / (A dx), A = 10 x 10 mm; the species is told by its radius
+  (the Table III diameter nearest to it).
+- Window: the dumps with tstart <= t <= tend. Time means over them; standard errors by batch means
+  (the window's dumps in 5 consecutive batches: sem = std(batch means) / sqrt(5)).
+- A species' layer: from its time-mean profile, the heights z05 and z95 below which 5 % and 95 % of
+  its volume lie; the interior is the central 60 % of z05..z95 (the layers of cells whose centres lie
+  there). plateau = the mean alpha_p,s over the interior; its sem from the same interior mean per
+  batch. top (bottom) = the height above (below) the interior where alpha_p,s falls below half the
+  plateau, linear between cell centres (the distributor, 0, when it never does below).
+- mean height: the volume-weighted mean centre height of the species per dump, time mean (+- sem);
+  its drift: the mean over the window's second half minus that over its first half (a layer still
+  settling or expanding drifts by more than its sem).
+- Mixing region: the cell layers where both species' alpha_p exceeds 10 % of its own plateau. Its
+  width per dump (the number of such layers x dx, from the instantaneous binned profiles) is averaged
+  over the window (mixing_width_mm, +- sem); mixing_width_mean_profile_mm is the same count on the
+  time-mean profiles (wider when the interface moves).
+- dp = rho_f p_inlet - rho_f g L (p is kinematic and holds the hydrostatic part; the outlet holds
+  p = 0; L = 120 mm): the frictional pressure drop over the tube. dp_weight = (rho_p - rho_f) g V_s/A
+  from the dumped radii (both species). p_frictional(z) = rho_f pMean(z) - rho_f g (L - z), and
+  alpha_p from its slope over a layer's interior: -(d p_frictional/dz) / ((rho_p - rho_f) g).
+- Axis: the four cells around x = y = 5 mm (the tube's axis, on their common edge), per cell layer:
+  the method's alphaP at the last written time, and each species binned in those cells at the last dump.
+
+Bad input is reported by name and time, never clipped (WARNING lines, messages.txt):
+- a species whose particles are smaller than the method's kernel allows: bigParticle when its
+  expanded diameter 2 n R is below the cell size (its kernel is its host cell: the centre method; the
+  paper's statement for its small particles); diffusion when the bandwidth b is more than 6 of its
+  diameters (the b = 6 d rule: its alpha_p is smeared over b/d of its diameters); sizeAwareDiffusion
+  when its class's bandwidth is below the cell size (no smoothing beyond a cell);
+- a layer that leaves the tube: a species with particles in the top cell layer (z > L - dx), or fewer
+  particles than at the start, named with the first dump time it happens and whether in the window.
+"""
+import argparse, glob, importlib.util, math, os, re, sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TOP = os.path.normpath(os.path.join(HERE, "..", ".."))
+
+
+def _load(path, name):
+    spec = importlib.util.spec_from_file_location(name, path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+# the dump reader, the surfaceFieldValue reader and batch means of the monodisperse bed's post-processing
+_mono = _load(os.path.join(TOP, "tutorials", "liquidFluidizedBed", "postprocess.py"), "liquid_bed_postprocess")
+read_dumps, read_fv, batch_sem, NB = _mono.read_dumps, _mono.read_fv, _mono.batch_sem, _mono.NB
+ref = _load(os.path.join(TOP, "validation", "khan", "references.py"), "khan_references")
+
+NX = NY = 10
+NZ = 120
+DX = ref.HEIGHT / NZ
+SPECIES = list(ref.SPECIES)                 # big, small
+MIX_FRACTION = 0.10                         # mixing region: both above 10 % of their plateau
+
+
+def species_index(radius):
+    """Index into SPECIES of each particle: the Table III diameter nearest to its own."""
+    ds = np.array([ref.SPECIES[s][0] for s in SPECIES])
+    return np.argmin(np.abs(2 * radius[:, None] - ds[None, :]), axis=1)
+
+
+def binned(c, sp, cells=None):
+    """alpha_p per cell layer of each species (array [species, NZ]) from one dump; cells: a mask of
+    the particles to count and the area they are counted over, default all and A."""
+    keep = np.ones(len(c["z"]), bool) if cells is None else cells[0]
+    area = ref.A if cells is None else cells[1]
+    k = np.clip((c["z"] // DX).astype(int), 0, NZ - 1)
+    v = 4.0 / 3 * math.pi * c["radius"] ** 3
+    return np.array([np.bincount(k[keep & (sp == s)], weights=v[keep & (sp == s)], minlength=NZ)
+                     for s in range(len(SPECIES))]) / (area * DX)
+
+
+def batches(x):
+    """The batch means of a series (first axis: dumps)."""
+    return [b.mean(axis=0) for b in np.array_split(np.asarray(x), NB)]
+
+
+def sem_of(x):
+    """Batch-means standard error of a series, element-wise along the first axis."""
+    x = np.asarray(x)
+    if len(x) < 2 * NB:
+        return np.full(x.shape[1:], np.nan) if x.ndim > 1 else float("nan")
+    return np.std(batches(x), axis=0, ddof=1) / math.sqrt(NB)
+
+
+def drift(x):
+    """Mean of the window's second half minus that of its first half (stationarity)."""
+    x = np.asarray(x)
+    h = len(x) // 2
+    return float(x[h:].mean() - x[:h].mean()) if h else float("nan")
+
+
+def crossing(z, a, start, level, step):
+    """Walking from index start by step (+1 up, -1 down), the height where a falls below level
+    (linear between cell centres); the distributor (0) or the tube's top when it never does."""
+    i = start
+    while 0 <= i + step < len(a):
+        if a[i + step] < level:
+            f = (a[i] - level) / (a[i] - a[i + step]) if a[i] != a[i + step] else 0.5
+            return z[i] + f * (z[i + step] - z[i])
+        i += step
+    return 0.0 if step < 0 else ref.HEIGHT
+
+
+def layer(z, prof, batch_profiles):
+    """Interior, plateau (+- sem), bottom and top of one species from its time-mean profile."""
+    cum = np.cumsum(prof) / max(prof.sum(), 1e-300)
+    z05 = float(z[np.searchsorted(cum, 0.05)])
+    z95 = float(z[min(np.searchsorted(cum, 0.95), len(z) - 1)])
+    lo, hi = z05 + 0.2 * (z95 - z05), z95 - 0.2 * (z95 - z05)
+    inner = (z >= lo - 1e-12) & (z <= hi + 1e-12)
+    if not inner.any():                                   # a layer thinner than a cell: its densest cell
+        inner = prof == prof.max()
+    plateau = float(prof[inner].mean())
+    per_batch = [float(b[inner].mean()) for b in batch_profiles]
+    sem = float(np.std(per_batch, ddof=1) / math.sqrt(NB)) if len(per_batch) == NB else float("nan")
+    idx = np.nonzero(inner)[0]
+    top = crossing(z, prof, int(idx[-1]), 0.5 * plateau, +1)
+    bottom = crossing(z, prof, int(idx[0]), 0.5 * plateau, -1)
+    return dict(plateau=plateau, sem=sem, inner=inner, interior_lo=float(z[idx[0]] - 0.5 * DX),
+                interior_hi=float(z[idx[-1]] + 0.5 * DX), top=top, bottom=bottom)
+
+
+def read_internal_field(path):
+    """The internalField of an ascii volScalarField (uniform or nonuniform), as an array."""
+    with open(path) as f:
+        text = f.read()
+    m = re.search(r"internalField\s+uniform\s+([-+0-9.eE]+)\s*;", text)
+    if m:
+        return np.full(NX * NY * NZ, float(m.group(1)))
+    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(", text)
+    if not m:
+        raise ValueError("%s: no ascii scalar internalField" % path)
+    n = int(m.group(1))
+    return np.array(text[m.end():].split(")", 1)[0].split(), float)[:n]
+
+
+def layers_of(field):
+    """Cross-section mean per cell layer of a field on the 10 x 10 x 120 block (x fastest)."""
+    return field.reshape(NZ, NY, NX).mean(axis=(1, 2))
+
+
+def written_times(run):
+    out = []
+    for d in os.listdir(run):
+        try:
+            t = float(d)
+        except ValueError:
+            continue
+        if t > 0 and os.path.isdir(os.path.join(run, d)):
+            out.append((t, d))
+    return sorted(out)
+
+
+def coupling_entries(run):
+    """The entries of RUN/constant/couplingProperties this script needs (word or number), by a
+    plain regular-expression read: voidFractionModel, smoothingModel, the bigParticle expansion
+    factor, the diffusion bandwidth and the size-aware bandwidth / d."""
+    with open(os.path.join(run, "constant", "couplingProperties")) as f:
+        text = re.sub(r"//.*", "", f.read())
+    def entry(pattern, default=None):
+        m = re.search(pattern, text)
+        return m.group(1) if m else default
+    return dict(model=entry(r"\bvoidFractionModel\s+(\w+)\s*;"),
+                smoothing=entry(r"\bsmoothingModel\s+(\w+)\s*;", "off"),
+                n=float(entry(r"bigParticleProps\s*\{[^}]*expansionFactor\s+([0-9.eE+-]+)", "0")),
+                b=float(entry(r"diffusionProps\s*\{[^}]*bandwidth\s+([0-9.eE+-]+)", "nan")),
+                b_over_d=float(entry(r"sizeAwareDiffusionProps\s*\{[^}]*bandwidthOverD\s+([0-9.eE+-]+)", "nan")))
+
+
+def kernel_messages(entries, first, t0):
+    """WARNING lines for the species too small for the method's kernel (see the module's doc)."""
+    out = []
+    sp = species_index(first["radius"])
+    for s, name in enumerate(SPECIES):
+        if not (sp == s).any():
+            continue
+        d = float(2 * first["radius"][sp == s].mean())
+        what = "species %s (d = %.2f mm, %d particles, present at t = %g s)" % (name, 1e3 * d, int((sp == s).sum()), t0)
+        if entries["model"] == "bigParticle" and entries["smoothing"] == "off" and entries["n"] >= 1 and \
+                2 * entries["n"] * 0.5 * d < DX:
+            out.append("%s: its particles are smaller than the bigParticle kernel reach allows: the expanded "
+                       "diameter 2 n R = %.3f mm (n = %g) is below the cell size %.1f mm, so its kernel is its "
+                       "host cell (the centre method) for every one of them" % (what, 1e3 * entries["n"] * d,
+                                                                                entries["n"], 1e3 * DX))
+        if entries["smoothing"] == "diffusion" and entries["b"] > 6 * d * (1 + 1e-9):
+            out.append("%s: its particles are smaller than the diffusion bandwidth allows: b = %.2f mm is %.1f of "
+                       "its diameters (the b = 6 d rule of Sun & Xiao 2015 holds for d >= %.2f mm), so its alpha_p "
+                       "is smeared over %.1f diameters" % (what, 1e3 * entries["b"], entries["b"] / d,
+                                                           1e3 * entries["b"] / 6, entries["b"] / d))
+        if entries["smoothing"] == "sizeAwareDiffusion" and entries["b_over_d"] * d < DX:
+            out.append("%s: its particles are smaller than the size-aware diffusion allows: its bandwidth "
+                       "%.2f mm (%g d) is below the cell size %.1f mm, so it is not smoothed beyond its cells"
+                       % (what, 1e3 * entries["b_over_d"] * d, entries["b_over_d"], 1e3 * DX))
+    return out
+
+
+def leaving_messages(dumps, tstart, tend):
+    """WARNING lines for the species that reach the top cell layer or lose particles, with the first
+    dump time; and (t, per species: count, particles in the top layer) per dump for series.csv."""
+    n0 = None
+    first_top, first_loss, per_dump = {}, {}, []
+    for t, c in dumps:
+        sp = species_index(c["radius"])
+        counts = [int((sp == s).sum()) for s in range(len(SPECIES))]
+        in_top = [int(((sp == s) & (c["z"] > ref.HEIGHT - DX)).sum()) for s in range(len(SPECIES))]
+        n0 = n0 or counts
+        per_dump.append((counts, in_top))
+        for s, name in enumerate(SPECIES):
+            if in_top[s] and name not in first_top:
+                first_top[name] = (t, in_top[s], counts[s])
+            if counts[s] < n0[s] and name not in first_loss:
+                first_loss[name] = (t, n0[s] - counts[s])
+    out = []
+    where = lambda t: "in the averaging window %g..%g s" % (tstart, tend) if tstart <= t <= tend else \
+        "before the averaging window" if t < tstart else "after the averaging window"
+    for name, (t, k, n) in first_top.items():
+        out.append("species %s leaves the tube: %d of its %d particles in the top cell layer (z > %.0f mm) at "
+                   "t = %g s (%s); its layer is held by the top wall from then on, not a free layer"
+                   % (name, k, n, 1e3 * (ref.HEIGHT - DX), t, where(t)))
+    for name, (t, k) in first_loss.items():
+        out.append("species %s lost %d particles by t = %g s (%s)" % (name, k, t, where(t)))
+    return out, per_dump
+
+
+def pair_overlap(c):
+    """(largest overlap of two particles / the smaller one's diameter, pairs above 5 % of it) of a
+    dump: particles sorted into cells of the largest diameter (every touching pair lies in the same
+    or adjacent cells), then each cell against itself and its 13 forward neighbours, in chunks."""
+    x = np.stack([c["x"], c["y"], c["z"]], axis=1)
+    r = c["radius"]
+    key = np.floor(x / (2 * r.max())).astype(int)
+    key -= key.min(axis=0)
+    dims = key.max(axis=0) + 1
+    flat = (key[:, 2] * dims[1] + key[:, 1]) * dims[0] + key[:, 0]
+    order = np.argsort(flat, kind="stable")
+    cells, start, count = np.unique(flat[order], return_index=True, return_counts=True)
+    pad = np.full((len(cells), count.max()), -1)
+    pad[np.repeat(np.arange(len(cells)), count), np.arange(len(order)) - np.repeat(start, count)] = order
+    ijk = np.stack([cells % dims[0], (cells // dims[0]) % dims[1], cells // (dims[0] * dims[1])], axis=1)
+    offsets = [(i, j, k) for k in (0, 1) for j in (-1, 0, 1) for i in (-1, 0, 1) if (k, j, i) >= (0, 0, 0)]
+    worst, n_bad = 0.0, 0
+    for off in offsets:
+        nb = ijk + np.array(off)
+        ok = ((nb >= 0) & (nb < dims)).all(axis=1)
+        nflat = (nb[:, 2] * dims[1] + nb[:, 1]) * dims[0] + nb[:, 0]
+        at = np.clip(np.searchsorted(cells, nflat), 0, len(cells) - 1)
+        ok &= cells[at] == nflat
+        src, dst = np.nonzero(ok)[0], at[ok]
+        for lo in range(0, len(src), 500):
+            a, b = pad[src[lo:lo + 500]], pad[dst[lo:lo + 500]]
+            valid = (a[:, :, None] >= 0) & (b[:, None, :] >= 0)
+            if off == (0, 0, 0):
+                valid &= np.triu(np.ones((a.shape[1], a.shape[1]), bool), 1)[None]
+            ia, ib = np.where(valid, a[:, :, None], 0), np.where(valid, b[:, None, :], 0)
+            dist = np.sqrt(((x[ia] - x[ib]) ** 2).sum(axis=-1))
+            rel = np.where(valid, (r[ia] + r[ib] - dist) / (2 * np.minimum(r[ia], r[ib])), -1.0)
+            worst = max(worst, float(rel.max()))
+            n_bad += int((rel > 0.05).sum())
+    return worst, n_bad
+
+
+def frictional_dp(run):
+    """(times, rho_f p_inlet - rho_f g L) from every start's pInlet file (a continued run starts a
+    new directory; a later start's samples replace the earlier ones from its start on)."""
+    files = sorted(glob.glob(os.path.join(run, "postProcessing", "pInlet", "*", "surfaceFieldValue.dat")),
+                   key=lambda p: float(os.path.basename(os.path.dirname(p))))
+    t_all, p_all = np.zeros(0), np.zeros(0)
+    for f in files:
+        t, p = read_fv(f)
+        if len(t):
+            keep = t_all < t[0] - 1e-12
+            t_all, p_all = np.concatenate([t_all[keep], t]), np.concatenate([p_all[keep], p])
+    return t_all, ref.RHO_F * p_all - ref.RHO_F * ref.G * ref.HEIGHT
+
+
+def write_csv(path, header, rows, fmt):
+    with open(path, "w") as f:
+        f.write(header + "\n")
+        for r in rows:
+            f.write(fmt % tuple(r) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("run")
+    for k in ("method", "mode"):
+        ap.add_argument("-" + k, required=True)
+    for k in ("U", "tstart", "tend", "demdt", "wall"):
+        ap.add_argument("-" + k, type=float, required=True)
+    a = ap.parse_args()
+    name = os.path.basename(os.path.normpath(a.run))
+    res = os.path.join(a.run, "results")
+    os.makedirs(res, exist_ok=True)
+    dumps = read_dumps(a.run, a.demdt)
+    if not dumps:
+        print("FAIL: %s: no particle dumps in %s/post" % (name, a.run))
+        return 1
+    warnings = kernel_messages(coupling_entries(a.run), dumps[0][1], dumps[0][0])
+    leave, per_dump = leaving_messages(dumps, a.tstart, a.tend)
+    warnings += leave
+
+    z = (np.arange(NZ) + 0.5) * DX
+    win = [(t, c) for t, c in dumps if a.tstart - 1e-9 <= t <= a.tend + 1e-9]
+    if len(win) < 2 * NB:
+        print("FAIL: %s: only %d particle dumps in the window %g..%g s (at least %d needed)"
+              % (name, len(win), a.tstart, a.tend, 2 * NB))
+        return 1
+    profs, heights = [], []                     # [dump][species][NZ], [dump][species]
+    for t, c in win:
+        sp = species_index(c["radius"])
+        profs.append(binned(c, sp))
+        v = c["radius"] ** 3
+        heights.append([float(np.sum(c["z"][sp == s] * v[sp == s]) / max(np.sum(v[sp == s]), 1e-300))
+                        for s in range(len(SPECIES))])
+    profs, heights = np.array(profs), np.array(heights)
+    mean, sem = profs.mean(axis=0), sem_of(profs)
+    bprofs = batches(profs)
+    lay = [layer(z, mean[s], [b[s] for b in bprofs]) for s in range(len(SPECIES))]
+
+    # mixing region: instantaneous per dump, averaged; and on the time-mean profiles
+    thr = [MIX_FRACTION * l["plateau"] for l in lay]
+    both = lambda p: (p[0] > thr[0]) & (p[1] > thr[1])
+    widths = np.array([both(p).sum() * DX for p in profs])
+    mix_mean_prof = both(mean)
+    mix_zone = (float(z[mix_mean_prof][0] - 0.5 * DX), float(z[mix_mean_prof][-1] + 0.5 * DX)) \
+        if mix_mean_prof.any() else (float("nan"), float("nan"))
+
+    # contacts: the largest overlap of two particles at the window's first, middle and last dump
+    overlaps = [pair_overlap(win[i][1]) for i in sorted({0, len(win) // 2, len(win) - 1})]
+    worst_overlap, worst_pairs = max(o[0] for o in overlaps), max(o[1] for o in overlaps)
+    if worst_overlap > 0.10:
+        warnings.append("particles overlap by up to %.0f %% of the smaller diameter (%d pairs above 5 %%) in the "
+                        "window: contacts are missed (LIGGGHTS neighbour lists: 'neighbor ... multi' is a stub in "
+                        "LIGGGHTS 3.8.0) or the contact stiffness is too low for the loads"
+                        % (100 * worst_overlap, worst_pairs))
+
+    # pressure: the inlet series, the window means of p and alphaP
+    t_dp, dp = frictional_dp(a.run)
+    pw = (t_dp >= a.tstart - 1e-9) & (t_dp <= a.tend + 1e-9)
+    if pw.sum() < 2 * NB:
+        print("FAIL: %s: only %d pressure samples in the window" % (name, pw.sum()))
+        return 1
+    dp_sim, dp_sem = float(dp[pw].mean()), batch_sem(dp[pw])
+    first = dumps[0][1]
+    sp0 = species_index(first["radius"])
+    vol = [float(np.sum(4.0 / 3 * math.pi * first["radius"][sp0 == s] ** 3)) for s in range(len(SPECIES))]
+    dp_ref = ref.dp_weight(sum(vol))
+    times = written_times(a.run)
+    last_t, last_dir = times[-1] if times else (float("nan"), None)
+    p_z = alpha_solver = np.full(NZ, np.nan)
+    if last_dir and os.path.isfile(os.path.join(a.run, last_dir, "pMean")):
+        p_z = ref.RHO_F * layers_of(read_internal_field(os.path.join(a.run, last_dir, "pMean")))
+        alpha_solver = layers_of(read_internal_field(os.path.join(a.run, last_dir, "alphaPMean")))
+    else:
+        warnings.append("no window means (pMean, alphaPMean) at the last written time %s: p(z) and the method's "
+                        "alpha_p(z) left out" % last_dir)
+    p_fric = p_z - ref.RHO_F * ref.G * (ref.HEIGHT - z)
+    dpdz_alpha = []
+    for l in lay:
+        zi, pi = z[l["inner"]], p_fric[l["inner"]]
+        ok = len(zi) >= 2 and np.isfinite(pi).all()
+        dpdz_alpha.append(float(-np.polyfit(zi, pi, 1)[0] / ((ref.RHO_P - ref.RHO_F) * ref.G)) if ok else float("nan"))
+
+    # the solver's own per-species binning (binnedSpeciesFields) against this script's, at the last
+    # written time and the dump of that time: the largest difference of a cell, per species
+    fields_check = [float("nan")] * len(SPECIES)
+    at_write = [c for t, c in dumps if abs(t - last_t) < 0.5 * a.demdt]
+    for s, name_s in enumerate(SPECIES):
+        path = os.path.join(a.run, last_dir, "alphaPBinned.type%d" % (s + 1)) if last_dir else ""
+        if at_write and os.path.isfile(path):
+            c = at_write[0]
+            k = (np.clip((c["x"] // DX).astype(int), 0, NX - 1) + NX * np.clip((c["y"] // DX).astype(int), 0, NY - 1)
+                 + NX * NY * np.clip((c["z"] // DX).astype(int), 0, NZ - 1))
+            m = species_index(c["radius"]) == s
+            mine = np.bincount(k[m], weights=4.0 / 3 * math.pi * c["radius"][m] ** 3, minlength=NX * NY * NZ) / DX ** 3
+            fields_check[s] = float(np.abs(mine - read_internal_field(path)).max())
+    if all(x == x for x in fields_check) and max(fields_check) > 1e-6:
+        warnings.append("the solver's alphaPBinned.type1/type2 at t = %g s differ from the binning of the dump of that "
+                        "time by up to %.3g (big) and %.3g (small) in a cell" % (last_t, fields_check[0], fields_check[1]))
+
+    # alpha_p on the axis at the end: the method's alphaP (last written time), the species at the last dump
+    axis_solver = np.full(NZ, np.nan)
+    if last_dir and os.path.isfile(os.path.join(a.run, last_dir, "alphaP")):
+        f = read_internal_field(os.path.join(a.run, last_dir, "alphaP")).reshape(NZ, NY, NX)
+        axis_solver = f[:, NY // 2 - 1:NY // 2 + 1, NX // 2 - 1:NX // 2 + 1].mean(axis=(1, 2))
+    t_end, c_end = dumps[-1]
+    near = (np.abs(c_end["x"] - 0.5 * ref.WIDTH) < DX) & (np.abs(c_end["y"] - 0.5 * ref.WIDTH) < DX)
+    axis_species = binned(c_end, species_index(c_end["radius"]), (near, 4 * DX * DX))
+
+    # files
+    cols = ",".join("alpha_%s,alpha_%s_sem" % (s, s) for s in SPECIES)
+    write_csv(os.path.join(res, "profiles.csv"),
+              "z_mm,%s,alpha_total,alphaP_method_mean,p_mean_Pa,p_frictional_Pa" % cols,
+              [[1e3 * z[k]] + [x for s in range(len(SPECIES)) for x in (mean[s][k], sem[s][k])] +
+               [mean[:, k].sum(), alpha_solver[k], p_z[k], p_fric[k]] for k in range(NZ)],
+              "%.1f" + ",%.5f,%.5f" * len(SPECIES) + ",%.5f,%.5f,%.3f,%.3f")
+    rows = []
+    for s, name_s in enumerate(SPECIES):
+        d = ref.SPECIES[name_s][0]
+        l = lay[s]
+        rows.append([name_s, 1e3 * d, int((sp0 == s).sum()), 1e9 * vol[s], l["plateau"], l["sem"],
+                     1e3 * l["interior_lo"], 1e3 * l["interior_hi"], 1e3 * l["bottom"], 1e3 * l["top"],
+                     1e3 * heights[:, s].mean(), 1e3 * sem_of(heights[:, s]), 1e3 * drift(heights[:, s]), dpdz_alpha[s],
+                     ref.alpha_richardson_zaki(a.U, d), ref.alpha_drag_equilibrium(a.U, d)])
+    write_csv(os.path.join(res, "layers.csv"),
+              "species,d_mm,N,V_s_mm3,alpha_p_plateau,alpha_p_sem,interior_lo_mm,interior_hi_mm,bottom_mm,top_mm,"
+              "mean_height_mm,mean_height_sem_mm,mean_height_drift_mm,alpha_p_from_dp,alpha_p_richardson_zaki,"
+              "alpha_p_drag_equilibrium",
+              rows, "%s,%.1f,%d,%.3f,%.5f,%.5f,%.1f,%.1f,%.2f,%.2f,%.3f,%.3f,%.3f,%.5f,%.5f,%.5f")
+    write_csv(os.path.join(res, "bed.csv"),
+              "method,U,mode,tstart,tend,window_s,n_dumps_window,n_dp_samples_window,dp_pa,dp_sem_pa,dp_weight_pa,"
+              "dp_rel_err,mixing_width_mm,mixing_width_sem_mm,mixing_width_mean_profile_mm,mixing_lo_mm,mixing_hi_mm,"
+              "t_end_dump,t_last_write,max_overlap_pct_d,n_pairs_overlap_over_5pct,binned_fields_diff_big,"
+              "binned_fields_diff_small,wall_s,n_warnings",
+              [[a.method, a.U, a.mode, a.tstart, a.tend, a.tend - a.tstart, len(win), int(pw.sum()), dp_sim, dp_sem,
+                dp_ref, (dp_sim - dp_ref) / dp_ref, 1e3 * widths.mean(), 1e3 * sem_of(widths),
+                1e3 * mix_mean_prof.sum() * DX, 1e3 * mix_zone[0], 1e3 * mix_zone[1], t_end, last_t,
+                100 * worst_overlap, worst_pairs, fields_check[0], fields_check[1], a.wall, len(warnings)]],
+              "%s,%.3f,%s,%g,%g,%g,%d,%d,%.3f,%.3f,%.3f,%.5f,%.2f,%.2f,%.1f,%.1f,%.1f,%g,%g,%.3f,%d,%.3g,%.3g,%.1f,%d")
+    write_csv(os.path.join(res, "axis_end.csv"),
+              "z_mm,alphaP_method_t%g,%s" % (last_t, ",".join("alpha_%s_binned_t%g" % (s, t_end) for s in SPECIES)),
+              [[1e3 * z[k], axis_solver[k]] + [axis_species[s][k] for s in range(len(SPECIES))] for k in range(NZ)],
+              "%.1f,%.5f" + ",%.5f" * len(SPECIES))
+    series = []
+    for (t, c), (counts, in_top) in zip(dumps, per_dump):
+        sp = species_index(c["radius"])
+        k = int(np.argmin(np.abs(t_dp - t))) if len(t_dp) else 0
+        row = [t]
+        for s in range(len(SPECIES)):
+            m = sp == s
+            row += [counts[s], 1e3 * float(c["z"][m].mean()) if m.any() else float("nan"),
+                    1e3 * float((c["z"][m] + c["radius"][m]).max()) if m.any() else float("nan"), in_top[s]]
+        row.append(dp[k] if len(t_dp) and abs(t_dp[k] - t) < 0.006 else float("nan"))
+        series.append(row)
+    write_csv(os.path.join(res, "series.csv"),
+              "t," + ",".join("n_%s,mean_z_%s_mm,highest_%s_mm,n_%s_top_layer" % (s, s, s, s) for s in SPECIES) + ",dp_pa",
+              series, "%.4f" + ",%d,%.3f,%.3f,%d" * len(SPECIES) + ",%.3f")
+    with open(os.path.join(res, "messages.txt"), "w") as f:
+        for w in warnings:
+            f.write("WARNING %s: %s\n" % (name, w))
+
+    for w in warnings:
+        print("WARNING %s: %s" % (name, w))
+    for s, name_s in enumerate(SPECIES):
+        r = rows[s]
+        print("%s: %-5s plateau alpha_p %.4f +- %.4f (Richardson-Zaki %.4f, drag equilibrium %.4f, pressure slope %.4f), "
+              "layer %.1f..%.1f mm, mean height %.2f +- %.2f mm (drift in the window %+.2f mm)"
+              % (name, name_s, r[4], r[5], r[14], r[15], r[13], r[8], r[9], r[10], r[11], r[12]))
+    print("%s: frictional dp %.2f +- %.2f Pa against the buoyant weight %.2f Pa (%+.2f %%); mixing region %.2f +- %.2f mm "
+          "(on the mean profiles %.1f mm, %.1f..%.1f mm); largest overlap %.2f %% d; window %g..%g s, %d dumps; wall %.0f s"
+          % (name, dp_sim, dp_sem, dp_ref, 100 * (dp_sim - dp_ref) / dp_ref, 1e3 * widths.mean(), 1e3 * sem_of(widths),
+             1e3 * mix_mean_prof.sum() * DX, 1e3 * mix_zone[0], 1e3 * mix_zone[1], 100 * worst_overlap, a.tstart,
+             a.tend, len(win), a.wall))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,227 @@
+#!/usr/bin/python3
+"""compare.py -- binaryBedKhan runs against the references: summary.csv, table.md, alpha_p_profiles.png.
+
+    compare.py OUT RUN [RUN ...]
+
+RUN: a run directory of tutorials/binaryBedKhan (runs/<method>_U<U>_<mode>[_background]/) that
+postprocess.py has processed (its results/bed.csv, layers.csv, profiles.csv, messages.txt). OUT gets:
+
+- summary.csv, one row per run and species, with the columns
+  method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,
+  mixing_width_mm,window_s,wall_s,coupling_share
+  alpha_p_reference: Richardson-Zaki with the Garside-Al-Dibouni exponent (the paper's Fig. 16
+  line; references.py); dp_pa, dp_reference_pa, mixing_width_mm: the whole bed's (the same on both
+  rows of a run); coupling_share: on the solver's last "Stage timers" line, every stage but DEM,
+  fluid and fields over the sum of all stages; wall_s: the run's wall seconds, summed over its starts;
+  method: the run's method, "+background" when its name ends in _background;
+- table.md: the same with the drag-law equilibrium, the pressure-slope alpha_p and the mean heights;
+- alpha_p_profiles.png: per velocity, each species' time-mean alpha_p(z) of every run (band: +- 2
+  batch-means sem) and, below, the method's own alpha_p on the tube's axis at the end (the paper's
+  Fig. 16), against the two references drawn over the height of the ideal layers (big on the
+  distributor, small on top of it);
+- the runs' WARNING lines, and CHECK lines against the acceptance targets of issue 19 (big-layer
+  plateau within 0.03 of Richardson-Zaki, pressure drop within 3 % of the buoyant weight, big below
+  small): MET or MISSED, not PASS/FAIL (a comparison, not a test).
+"""
+import csv, importlib.util, math, os, re, sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+HEADER = ("method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,"
+          "mixing_width_mm,window_s,wall_s,coupling_share")
+
+
+def _load(path, name):
+    spec = importlib.util.spec_from_file_location(name, path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+ref = _load(os.path.join(HERE, "references.py"), "khan_references")
+# the solver log's segments (one per start) and which stages are not the coupling's, as the Mueller
+# validation reads them
+_muller = _load(os.path.join(HERE, "..", "muller", "summary.py"), "muller_summary")
+log_segments, NOT_COUPLING = _muller.log_segments, _muller.NOT_COUPLING
+
+
+def coupling_share(log):
+    """Share of the coupling's stages on the log's last "Stage timers" line (nan without one)."""
+    stages = [s["stages"] for s in log_segments(log) if s["stages"]]
+    if not stages:
+        return float("nan")
+    last = stages[-1]
+    total = sum(last.values())
+    return sum(v for k, v in last.items() if k not in NOT_COUPLING) / total if total > 0 else float("nan")
+
+
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def read_run(run):
+    res = os.path.join(run, "results")
+    for f in ("bed.csv", "layers.csv", "profiles.csv"):
+        if not os.path.isfile(os.path.join(res, f)):
+            raise SystemExit("compare.py: %s has no results/%s (run postprocess.py first, or Allrun -post)" % (run, f))
+    bed = read_csv(os.path.join(res, "bed.csv"))[0]
+    layers = {r["species"]: r for r in read_csv(os.path.join(res, "layers.csv"))}
+    prof = read_csv(os.path.join(res, "profiles.csv"))
+    axis = read_csv(os.path.join(res, "axis_end.csv")) if os.path.isfile(os.path.join(res, "axis_end.csv")) else []
+    log = os.path.join(run, "log.coarseDemFoam")
+    share = coupling_share(log) if os.path.isfile(log) else float("nan")
+    msgs = os.path.join(res, "messages.txt")
+    warnings = [l.rstrip("\n") for l in open(msgs)] if os.path.isfile(msgs) else []
+    name = os.path.basename(os.path.normpath(run))
+    method = bed["method"] + ("+background" if name.endswith("_background") else "")
+    return dict(name=name, method=method, bed=bed, layers=layers, prof=prof, axis=axis, share=share, warnings=warnings)
+
+
+def summary_rows(runs):
+    out = []
+    for r in runs:
+        b = r["bed"]
+        for sp in ref.SPECIES:
+            l = r["layers"][sp]
+            out.append(dict(method=r["method"], U="%.3f" % float(b["U"]), species=sp,
+                            alpha_p_plateau=l["alpha_p_plateau"], alpha_p_sem=l["alpha_p_sem"],
+                            alpha_p_reference="%.5f" % float(l["alpha_p_richardson_zaki"]),
+                            layer_top_mm=l["top_mm"], dp_pa=b["dp_pa"], dp_reference_pa=b["dp_weight_pa"],
+                            mixing_width_mm=b["mixing_width_mm"], window_s=b["window_s"], wall_s=b["wall_s"],
+                            coupling_share="%.4f" % r["share"]))
+    return out
+
+
+def write_table(path, runs):
+    with open(path, "w") as f:
+        f.write("| run | species | alpha_p plateau ± sem | R-Z | drag eq. | plateau - R-Z | from dp slope | layer (mm) "
+                "| mean height (mm) | its drift (mm) | dp (Pa) ± sem | weight (Pa) | dp err | mixing (mm) | window (s) | wall (s) "
+                "| coupling |\n")
+        f.write("|" + "---|" * 17 + "\n")
+        for r in runs:
+            b = r["bed"]
+            for sp in ref.SPECIES:
+                l = r["layers"][sp]
+                f.write("| %s | %s | %.4f ± %.4f | %.4f | %.4f | %+.4f | %.4f | %.1f..%.1f | %.2f ± %.2f | %+.2f | %.2f ± %.2f "
+                        "| %.2f | %+.1f %% | %.1f ± %.1f | %g | %.0f | %.1f %% |\n" % (
+                            r["name"], sp, float(l["alpha_p_plateau"]), float(l["alpha_p_sem"]),
+                            float(l["alpha_p_richardson_zaki"]), float(l["alpha_p_drag_equilibrium"]),
+                            float(l["alpha_p_plateau"]) - float(l["alpha_p_richardson_zaki"]),
+                            float(l["alpha_p_from_dp"]), float(l["bottom_mm"]), float(l["top_mm"]),
+                            float(l["mean_height_mm"]), float(l["mean_height_sem_mm"]),
+                            float(l["mean_height_drift_mm"]), float(b["dp_pa"]),
+                            float(b["dp_sem_pa"]), float(b["dp_weight_pa"]), 100 * float(b["dp_rel_err"]),
+                            float(b["mixing_width_mm"]), float(b["mixing_width_sem_mm"]), float(b["window_s"]),
+                            float(b["wall_s"]), 100 * r["share"]))
+        f.write("\nalpha_p: particle volumes binned by the cell of their centre, cross-section mean, time mean over "
+                "the window (sem: batch means); R-Z: Richardson-Zaki with the Garside-Al-Dibouni exponent; drag eq.: "
+                "the homogeneous layer under the code's Di Felice drag (references.py).\n")
+        warnings = [w for r in runs for w in r["warnings"]]
+        if warnings:
+            f.write("\n" + "\n".join("- " + w for w in warnings) + "\n")
+
+
+def reference_lines(ax, U, vols, z_top):
+    """The two references of each species at U, drawn over its ideal layer (big on the distributor,
+    small on top of it; heights from the run's solid volumes and Richardson-Zaki)."""
+    z0 = 0.0
+    for sp in ref.SPECIES:
+        d = ref.SPECIES[sp][0]
+        for alpha, style, label in ((ref.alpha_richardson_zaki(U, d), "k:", "Richardson-Zaki (the paper's line)"),
+                                    (ref.alpha_drag_equilibrium(U, d), "k-.", "Di Felice equilibrium")):
+            if alpha == alpha:
+                h = min(ref.layer_height(alpha, vols[sp]), z_top - z0)
+                ax.plot([alpha, alpha], [1e3 * z0, 1e3 * (z0 + h)], style, lw=1, label=label if sp == "big" else None)
+        a_rz = ref.alpha_richardson_zaki(U, d)
+        z0 += ref.layer_height(a_rz, vols[sp]) if a_rz == a_rz else 0
+
+
+def plot(path, runs):
+    """Top row: each species' time-mean profile per run and velocity; bottom row: the method's
+    alpha_p on the axis at the end (the paper's Fig. 16), both against the references."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("compare.py: matplotlib not available, no plot")
+        return
+    us = sorted({float(r["bed"]["U"]) for r in runs})
+    fig, axes = plt.subplots(2, len(us), figsize=(4.6 * len(us), 9.5), squeeze=False)
+    methods = sorted({r["method"] for r in runs})
+    for col, U in enumerate(us):
+        mine = [r for r in runs if float(r["bed"]["U"]) == U]
+        top = 0.0
+        for r in mine:
+            colour = "C%d" % methods.index(r["method"])
+            z = [float(p["z_mm"]) for p in r["prof"]]
+            for sp, style in zip(ref.SPECIES, ("-", "--")):
+                a = [float(p["alpha_" + sp]) for p in r["prof"]]
+                e = [2 * float(p["alpha_%s_sem" % sp]) for p in r["prof"]]
+                axes[0][col].plot(a, z, style, color=colour, lw=1.2, label="%s, %s (%s)" % (r["method"], sp, r["bed"]["mode"]))
+                axes[0][col].fill_betweenx(z, [x - y for x, y in zip(a, e)], [x + y for x, y in zip(a, e)],
+                                           color=colour, alpha=0.2)
+                top = max([top] + [zz for zz, aa in zip(z, a) if aa > 0.01])
+            if r["axis"]:
+                key = next(k for k in r["axis"][0] if k.startswith("alphaP_method"))
+                axes[1][col].plot([float(p[key]) for p in r["axis"]], [float(p["z_mm"]) for p in r["axis"]], "-",
+                                  color=colour, lw=1.2, label="%s, t = %s s" % (r["method"], key.split("_t")[-1]))
+        vols = {sp: 1e-9 * float(mine[0]["layers"][sp]["V_s_mm3"]) for sp in ref.SPECIES}
+        zmax = min(120.0, max(top, 1e3 * sum(ref.layer_height(ref.alpha_richardson_zaki(U, ref.SPECIES[sp][0]), vols[sp])
+                                                for sp in ref.SPECIES)) + 10)
+        for row, xlabel in ((0, "alpha_p per species (cross-section, time mean)"),
+                            (1, "the method's alpha_p on the axis at the end")):
+            ax = axes[row][col]
+            reference_lines(ax, U, vols, ref.HEIGHT)
+            ax.set_title("U = %.3f m/s" % U, fontsize=10)
+            ax.set_xlabel(xlabel, fontsize=9)
+            ax.set_ylabel("z (mm)")
+            ax.set_xlim(0, 0.75)
+            ax.set_ylim(0, zmax)
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=6)
+    fig.suptitle("binaryBedKhan: solid 1 mm, dashed 0.3 mm", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def checks(runs):
+    for r in runs:
+        b, big, small = r["bed"], r["layers"]["big"], r["layers"]["small"]
+        d_big = float(big["alpha_p_plateau"]) - float(big["alpha_p_richardson_zaki"])
+        print("CHECK %-6s %s: big-layer plateau %.4f within 0.03 of Richardson-Zaki %.4f (%+.4f)" % (
+            "MET" if abs(d_big) <= 0.03 else "MISSED", r["name"], float(big["alpha_p_plateau"]),
+            float(big["alpha_p_richardson_zaki"]), d_big))
+        e = float(b["dp_rel_err"])
+        print("CHECK %-6s %s: pressure drop %.2f Pa within 3 %% of the buoyant weight %.2f Pa (%+.2f %%)" % (
+            "MET" if abs(e) <= 0.03 else "MISSED", r["name"], float(b["dp_pa"]), float(b["dp_weight_pa"]), 100 * e))
+        hb, hs = float(big["mean_height_mm"]), float(small["mean_height_mm"])
+        print("CHECK %-6s %s: big below small (mean heights %.2f and %.2f mm)" % (
+            "MET" if hb < hs else "MISSED", r["name"], hb, hs))
+
+
+def main(argv):
+    if len(argv) < 2:
+        print(__doc__.split("\n\n")[1], file=sys.stderr)
+        return 2
+    out, runs = argv[0], [read_run(r) for r in argv[1:]]
+    os.makedirs(out, exist_ok=True)
+    rows = summary_rows(runs)
+    with open(os.path.join(out, "summary.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=HEADER.split(","), lineterminator="\n")
+        w.writeheader()
+        w.writerows(rows)
+    write_table(os.path.join(out, "table.md"), runs)
+    plot(os.path.join(out, "alpha_p_profiles.png"), runs)
+    for r in runs:
+        for w in r["warnings"]:
+            print(w)
+    checks(runs)
+    print("compare.py: %d runs, %d rows: %s" % (len(runs), len(rows), ", ".join(
+        os.path.join(out, f) for f in ("summary.csv", "table.md", "alpha_p_profiles.png"))))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
