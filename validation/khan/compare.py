@@ -12,7 +12,7 @@ postprocess.py has processed (its results/bed.csv, layers.csv, profiles.csv, mes
   alpha_p_reference: Richardson-Zaki with the Garside-Al-Dibouni exponent (the paper's Fig. 16
   line; references.py); dp_pa, dp_reference_pa, mixing_width_mm: the whole bed's (the same on both
   rows of a run); coupling_share: on the solver's last "Stage timers" line, every stage but DEM,
-  fluid and fields over the sum of all stages; wall_s: the run's wall seconds, summed over its starts;
+  fluid and fields over the sum of all stages (a continued run: each start's last line, summed); wall_s: the run's wall seconds, summed over its starts;
   method: the run's method, "+background" when its name ends in _background;
 - table.md: the same with the drag-law equilibrium, the pressure-slope alpha_p and the mean heights;
 - alpha_p_profiles.png: per velocity, each species' time-mean alpha_p(z) of every run (band: +- 2
@@ -41,17 +41,19 @@ ref = _load(os.path.join(HERE, "references.py"), "khan_references")
 # the solver log's segments (one per start) and which stages are not the coupling's, as the Mueller
 # validation reads them
 _muller = _load(os.path.join(HERE, "..", "muller", "summary.py"), "muller_summary")
-log_segments, NOT_COUPLING = _muller.log_segments, _muller.NOT_COUPLING
+log_segments, stage_times, NOT_COUPLING = _muller.log_segments, _muller.stage_times, _muller.NOT_COUPLING
 
 
 def coupling_share(log):
-    """Share of the coupling's stages on the log's last "Stage timers" line (nan without one)."""
-    stages = [s["stages"] for s in log_segments(log) if s["stages"]]
+    """Share of the coupling's stages: every stage of the solver's last "Stage timers" line but DEM,
+    fluid and fields, over the sum of all stages. A continued run's log holds one start per
+    (re)start, each timing from its own start: their last lines are summed (a -continue at the end
+    time adds a start of no steps, whose line alone would be its set-up). nan without any line."""
+    stages = stage_times(log_segments(log))
     if not stages:
         return float("nan")
-    last = stages[-1]
-    total = sum(last.values())
-    return sum(v for k, v in last.items() if k not in NOT_COUPLING) / total if total > 0 else float("nan")
+    total = sum(stages.values())
+    return sum(v for k, v in stages.items() if k not in NOT_COUPLING) / total if total > 0 else float("nan")
 
 
 def read_csv(path):
