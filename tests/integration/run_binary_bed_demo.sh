@@ -25,12 +25,16 @@ while [ $# -gt 0 ]; do
     esac
 done
 case_dir="$top/tutorials/binaryBedKhan"
-name="${method}_U${U}_demo"
+# the test's own run (a user's runs/<method>_U<U>_demo stays), and one test at a time: a second
+# invocation (another tests/Alltest) waits here instead of deleting this one's run under it
+name="alltest_${method}_U${U}_demo"
 run="$case_dir/runs/$name"
+exec 9> /tmp/coarsedem-binarybed-test.lock
+flock 9
 log="/tmp/coarsedem-binarybed-$name.log"
 tag="binary bed demo $name"
 start=$(date +%s)
-if ! "$case_dir/Allrun" -mode demo -method "$method" -U "$U" > "$log" 2>&1; then
+if ! "$case_dir/Allrun" -mode demo -method "$method" -U "$U" -name "$name" > "$log" 2>&1; then
     result fail "$tag: Allrun failed (see $log)"; tail -5 "$log"; finish
 fi
 result ok "$tag: Allrun ran to the end and post-processed ($(( $(date +%s) - start )) s, $log)"
@@ -108,7 +112,7 @@ rm -rf "$bad"
 
 # -continue: with the run's own case files it continues (at its end already: the solver starts and
 # stops, the post-processing again); with a changed file it refuses, naming it
-if "$case_dir/Allrun" -mode demo -method "$method" -U "$U" -continue > "$log.continue" 2>&1 &&
+if "$case_dir/Allrun" -mode demo -method "$method" -U "$U" -name "$name" -continue > "$log.continue" 2>&1 &&
    grep -q "continuing runs/$name" "$log.continue"; then
     result ok "$tag: -continue with the same case files continues"
 else
@@ -116,7 +120,7 @@ else
 fi
 cp "$run/DEM/in.liggghts" "$log.dem"
 echo "# edited" >> "$run/DEM/in.liggghts"
-if ! "$case_dir/Allrun" -mode demo -method "$method" -U "$U" -continue > "$log.refused" 2>&1 &&
+if ! "$case_dir/Allrun" -mode demo -method "$method" -U "$U" -name "$name" -continue > "$log.refused" 2>&1 &&
    grep -q "DEM/in.liggghts" "$log.refused" && grep -q "cannot continue" "$log.refused"; then
     result ok "$tag: -continue with a changed case file refuses, naming DEM/in.liggghts"
 else
