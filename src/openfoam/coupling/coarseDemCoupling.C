@@ -286,7 +286,7 @@ void coarseDemCoupling::pushForces()
     dragUf_.resize(implicitParticleDrag_ ? 3*n : 0);
     for (label i = 0; i < n; ++i)
     {
-        const vector f = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
+        const vector f = particleForce(i);
         const vector fDem = implicitParticleDrag_ ? fOther_[i] : f;
         for (direction d = 0; d < 3; ++d) force_[3*i + d] = fDem[d];
         if (implicitParticleDrag_)
@@ -363,7 +363,7 @@ void coarseDemCoupling::write()
         for (label i = 0; i < n; ++i)
         {
             d[i] = 2*particles_.radius[i];
-            f[i] = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
+            f[i] = particleForce(i);
         }
         writeParticleCloud(mesh_, "particles", particles_, cdc_kernels_hosts(voidFraction_.kernels()), d, f);
     }

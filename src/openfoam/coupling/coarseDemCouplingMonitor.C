@@ -65,7 +65,7 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
     nonReacting_ = Zero;
     forAll(K_, i)
     {
-        const vector f = K_[i]*(state_.Uf[i] - state_.v[i]) + fOther_[i];
+        const vector f = particleForce(i);
         fParticles += K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i];
         nonReacting_ += fOther_[i] - fReact_[i];
         forceScale_ += mag(f);
