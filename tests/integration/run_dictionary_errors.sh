@@ -120,8 +120,8 @@ check particle_outside '' "1 particle(s) outside the mesh, ids: 2001" \
 check particle_outside_time '' "at time 0" \
     "sed -i 's/0 0.011 0 0.011 0 0.055 units box/0 0.011 0 0.011 0 0.08 units box/; s/^fix *cfd.*/create_atoms 1 single 0.005 0.005 0.07 units box\nset atom 2001 diameter 0.001 density 2500\n&/' DEM/in.liggghts"
 # a particle leaving the DEM box is deleted by LIGGGHTS (silently with thermo_modify lost ignore):
-# the solver stops at the next coupling with the count and the time
-check particle_lost '' "the DEM lost 1 particle(s) in the CFD step ending at time 0.0005 (2001 -> 2000)" \
+# the solver stops at the next coupling naming the particle, where it was last seen and the times
+check particle_lost '' "1 particle(s) left the DEM between time 0 and 0.0005, and there is no outlet (openSystem) in" \
     "sed -i 's/^fix *cfd.*/&\ncreate_atoms 1 single 0.005 0.005 0.054 units box\nset atom 2001 diameter 0.001 density 2500\ngroup fly id 2001\nvelocity fly set 0 0 50\nfix fly fly nve\/sphere\nthermo_modify lost ignore/' DEM/in.liggghts"
 # a NaN velocity coming from the DEM (here set by the script: inf - inf): stop naming the particle and the
 # time. With OpenFOAM's floating-point trapping on (FOAM_SIGFPE, the default) the NaN's creation inside

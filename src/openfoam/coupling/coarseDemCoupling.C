@@ -23,7 +23,7 @@ static IOobject couplingDictIO(const fvMesh& mesh)
 // before the first model reads its dictionary.
 static const dictionary& checkPropsDictionaries(const dictionary& dict)
 {
-    wordHashSet known{"backgroundFieldsProps", "diffusionProps", "sizeAwareDiffusionProps"};
+    wordHashSet known{"backgroundFieldsProps", "diffusionProps", "sizeAwareDiffusionProps", "openSystem"};
     for (int i = 0; i < cdc_method_count(); ++i) known.insert(word(cdc_method_name(i)) + "Props");
     for (const word& f : forceModel::dictionaryConstructorTablePtr_->sortedToc()) known.insert(f + "Props");
     for (const entry& e : dict)
@@ -69,7 +69,7 @@ coarseDemCoupling::coarseDemCoupling
     halo_(mesh),
     solidVolumeParticles_(0), solidVolumeCells_(0), momentumImbalance_(0), forceScale_(0),
     nParticles_(0),
-    nParticlesBefore_(-1),
+    inventory_(mesh, dict_, allowParticleLoss_),
     particleDragRatio_(0),
     nParticlesBeyond_(0),
     fluidDragRatio_(0),
@@ -145,9 +145,10 @@ void coarseDemCoupling::couple
     const volScalarField& nuEff, const volVectorField* DUDt
 )
 {
-    compareExchangeInTime(U);                  // the momentum exchanged over the last DEM segment
     ++nCouplings_;
     pullParticles();                           // particles_ from the DEM, ghosts_ from the neighbours
+    // the momentum exchanged over the last DEM segment, unless particles entered or left in it
+    compareExchangeInTime(U, inventory_.update(particles_));
     const cdc_particles cp = coreParticles();  // NaN positions and bad radii are caught by the core
     const cdc_particles cg = {int32_t(ghosts_.size()), ghosts_.x.data(), ghosts_.radius.data(),
                               reinterpret_cast<const int64_t*>(ghosts_.id.data()), nullptr};
@@ -168,14 +169,13 @@ void coarseDemCoupling::couple
     checkExplicitRange(alpha);
 }
 
-// The DEM's particles of this rank, checked against the last count, and the ghosts: copies of the
-// neighbours' particles whose kernels (or background kernels) reach into this rank's cells.
+// The DEM's particles of this rank and the ghosts: copies of the neighbours' particles whose kernels
+// (or background kernels) reach into this rank's cells.
 void coarseDemCoupling::pullParticles()
 {
     dem_->pull(particles_);
     const label n = particles_.size();
     nParticles_ = returnReduce(n, sumOp<label>());
-    checkParticleCount();
     timers_.start(stageTimers::ghosts);
     reach_.resize(n);
     for (label i = 0; i < n; ++i)
@@ -348,6 +348,7 @@ void coarseDemCoupling::setFluidFraction(volScalarField& alpha)
 void coarseDemCoupling::write()
 {
     if (!mesh_.time().writeTime()) return;
+    inventory_.write(particles_);
     if (demRestart_)
     {
         const fileName dir = mesh_.time().globalPath()/mesh_.time().timeName();

@@ -35,11 +35,18 @@ Foam::vector coarseDemCoupling::fluidMomentumSource(const volVectorField& U) con
     );
 }
 
-void coarseDemCoupling::compareExchangeInTime(const volVectorField& U)
+void coarseDemCoupling::compareExchangeInTime(const volVectorField& U, bool segmentChanged)
 {
     // before the exchange fields are replaced: U is the fluid's velocity after the step that used
-    // them, and the DEM has just run the segment that used them
+    // them, and the DEM has just run the segment that used them. A segment in which particles
+    // entered or left is not compared: the particles' impulse misses the part of the segment
+    // they were not in the DEM for.
     if (!exchangePending_) return;
+    if (segmentChanged)
+    {
+        ++nExchangesSkipped_;
+        return;
+    }
     const vector particles =
         returnReduce(dem_->couplingImpulse(), sumOp<vector>()) - segmentSeconds_*nonReacting_;
     const vector fluid = exchangeDt_*fluidMomentumSource(U);
@@ -80,22 +87,6 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
     reduce(forceScale_, sumOp<scalar>());
     momentumImbalance_ = mag(fluidTotal + fParticles);
     timers_.stop();
-}
-
-void coarseDemCoupling::checkParticleCount()
-{
-    // LIGGGHTS deletes particles that leave its box (boundary f) and may only say so at its next
-    // thermo output: a drop is lost solid mass, so it stops the run unless it is intended
-    if (nParticlesBefore_ >= 0 && nParticles_ < nParticlesBefore_ && !allowParticleLoss_)
-    {
-        FatalErrorInFunction
-            << "the DEM lost " << nParticlesBefore_ - nParticles_ << " particle(s) in the CFD step"
-            << " ending at time " << mesh_.time().timeName() << " (" << nParticlesBefore_ << " -> "
-            << nParticles_ << "): LIGGGHTS deletes particles that leave its box; check the DEM"
-            << " walls and the time steps, or set allowParticleLoss true in " << dict_.name()
-            << " if particles are removed on purpose" << exit(FatalError);
-    }
-    nParticlesBefore_ = nParticles_;
 }
 
 void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
@@ -167,7 +158,10 @@ void coarseDemCoupling::report(Ostream& os) const
             << " cells > 1)";
     }
     os  << endl;
-    os  << "Exchange in time: " << nExchangesCompared_ << " couplings compared, |particles' + fluid's"
+    if (inventory_.open() || inventory_.nChanged() > 0) inventory_.report(os);
+    os  << "Exchange in time: " << nExchangesCompared_ << " couplings compared";
+    if (nExchangesSkipped_ > 0) os << " (" << nExchangesSkipped_ << " with particles entering or leaving not)";
+    os  << ", |particles' + fluid's"
         << " impulse| of a coupling step last " << exchangeLastRel_ << " max " << exchangeMaxRel_
         << " x exchange; since the start net " << exchangeNet_ << " N s of " << exchangeGross_
         << " N s" << endl;

@@ -11,6 +11,7 @@
 #include "lammps.h"
 #include "input.h"
 #include "modify.h"
+#include "fix.h"
 #include "update.h"
 #include "fix_couple_coarse.h"
 
@@ -115,7 +116,9 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
         {"liggghts", "-log", logFile, "-var", "restart", restart, "-var", "restarting", restart == "none" ? "0" : "1"};
     if (getEnv("COARSEDEM_DEM_SCREEN").empty())
     {
-        args.insert(args.begin() + 1, {"-screen", "none"});
+        // /dev/null, not "none": parts of LIGGGHTS (the STL reader of fix mesh/surface) print to the
+        // screen without checking that there is one, and crash when it is off
+        args.insert(args.begin() + 1, {"-screen", "/dev/null"});
     }
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(&a[0]);
@@ -195,11 +198,27 @@ void Foam::liggghtsDem::command(const std::string& line)
     lmp_->input->one(line.c_str());
 }
 
+void Foam::liggghtsDem::deleteMarkedParticles()
+{
+    // fix massflow/mesh ... delete_atoms yes marks the particles that crossed its surface and deletes
+    // them in its pre_exchange, which LIGGGHTS calls only where a run rebuilds its neighbour lists.
+    // A segment starts with a setup (a rebuild that does not call it), so a segment too short for the
+    // particles to move half the skin distance never deletes them: the deletion is called here, before
+    // the setup that follows rebuilds the lists without them. (No-op when nothing is marked.)
+    LAMMPS_NS::Modify& modify = *lmp_->modify;
+    demCall guard;
+    for (int i = 0; i < modify.nfix; ++i)
+    {
+        if (std::string(modify.fix[i]->style).compare(0, 13, "massflow/mesh") == 0) modify.fix[i]->pre_exchange();
+    }
+}
+
 void Foam::liggghtsDem::run(label nSteps)
 {
     // Every DEM segment starts with LIGGGHTS' setup: the forces of its first half-step are then those
     // of the coupling data just pushed (K, u_f at the particles' current velocity), the same in serial,
     // in parallel (where a setup follows each segment, below) and after a restart or write_restart.
+    deleteMarkedParticles();
     command("run " + std::to_string(nSteps) + " pre yes post no");
     if (Pstream::parRun())
     {
