@@ -96,38 +96,52 @@ label particleInventory::find(const List<region>& regions, const point& x)
     return -1;
 }
 
-void particleInventory::compare(const demParticles& p, Map<seen>& now, changes& gone, changes& added) const
+void particleInventory::record(const demParticles& p)
 {
     const label n = p.size();
-    now.resize(2*n);
-    DynamicList<label> ids;
-    DynamicList<point> xs;
-    DynamicList<scalar> ms;
+    ids_.setSize(n);
+    x_.setSize(n);
+    mass_.setSize(n);
     for (label i = 0; i < n; ++i)
     {
         const scalar r = p.radius[i];
-        const seen s{point(p.x[3*i], p.x[3*i + 1], p.x[3*i + 2]),
-                     p.density[i]*4.0/3.0*constant::mathematical::pi*r*r*r};
-        const label id = label(p.id[i]);
-        now.set(id, s);
-        if (!previous_.found(id))
+        ids_[i] = label(p.id[i]);
+        x_[i] = point(p.x[3*i], p.x[3*i + 1], p.x[3*i + 2]);
+        mass_[i] = p.density[i]*4.0/3.0*constant::mathematical::pi*r*r*r;
+    }
+}
+
+void particleInventory::compare(changes& gone, changes& added)
+{
+    // seenAt_[id]: the coupling this rank last held particle id at. O(n) per coupling, no hashing:
+    // 4 bytes per DEM id (40 MB for ids up to 10^7)
+    label maxId = 0;
+    for (const label id : ids_) maxId = max(maxId, id);
+    if (maxId >= label(seenAt_.size())) seenAt_.resize(maxId + 1, -1);
+    DynamicList<label> ids;
+    DynamicList<point> xs;
+    DynamicList<scalar> ms;
+    forAll(ids_, i)
+    {
+        if (seenAt_[ids_[i]] != nCouplings_ - 1)
         {
-            ids.append(id);
-            xs.append(s.x);
-            ms.append(s.mass);
+            ids.append(ids_[i]);
+            xs.append(x_[i]);
+            ms.append(mass_[i]);
         }
+        seenAt_[ids_[i]] = nCouplings_;
     }
     added.ids = ids;
     added.x = xs;
     added.mass = ms;
     ids.clear(); xs.clear(); ms.clear();
-    forAllConstIters(previous_, iter)
+    forAll(previousIds_, k)
     {
-        if (!now.found(iter.key()))
+        if (seenAt_[previousIds_[k]] != nCouplings_)
         {
-            ids.append(iter.key());
-            xs.append(iter.val().x);
-            ms.append(iter.val().mass);
+            ids.append(previousIds_[k]);
+            xs.append(previousX_[k]);
+            ms.append(previousMass_[k]);
         }
     }
     gone.ids = ids;
@@ -159,23 +173,24 @@ List<particleInventory::changes> particleInventory::allRanks(const changes& mine
 
 bool particleInventory::update(const demParticles& p)
 {
-    Map<seen> now;
-    changes goneHere, addedHere;
-    compare(p, now, goneHere, addedHere);
-    scalar mass = 0;
-    forAllConstIters(now, iter) mass += iter.val().mass;
-    massNow_ = returnReduce(mass, sumOp<scalar>());
-    nNow_ = returnReduce(p.size(), sumOp<label>());
+    record(p);
+    massNow_ = gSum(mass_);
+    nNow_ = returnReduce(ids_.size(), sumOp<label>());
     const scalar t = mesh_.time().value();
-    if (first_)
+    changes goneHere, addedHere;
+    compare(goneHere, addedHere);   // (at the first coupling every particle is new: not counted)
+    previousIds_.transfer(ids_);
+    previousX_.transfer(x_);
+    previousMass_.transfer(mass_);
+    const scalar t0 = previousTime_;
+    previousTime_ = t;
+    if (nCouplings_++ == 0)
     {
         // the run's first coupling (or a restart's): nothing to compare with yet
-        first_ = false;
         if (massStart_ < 0) massStart_ = massNow_;
-        previous_.transfer(now);
-        previousTime_ = t;
         return false;
     }
+    if (!returnReduce(goneHere.ids.size() + addedHere.ids.size() > 0, orOp<bool>())) return false;
     const List<changes> gone(allRanks(goneHere)), added(allRanks(addedHere));
 
     Map<label> arrived;   // new on a rank; those that were gone from another moved between them
@@ -208,17 +223,15 @@ bool particleInventory::update(const demParticles& p)
             changed = true;
         }
     }
-    if (nLost > 0 && !allowLoss_) stopOnLoss(nLost, lostId, lostX);
+    if (nLost > 0 && !allowLoss_) stopOnLoss(nLost, lostId, lostX, t0);
     if (changed) ++nChanged_;
-    previous_.transfer(now);
-    previousTime_ = t;
     return changed;
 }
 
-void particleInventory::stopOnLoss(label nLost, label id, const point& x) const
+void particleInventory::stopOnLoss(label nLost, label id, const point& x, scalar t0) const
 {
     FatalErrorInFunction
-        << nLost << " particle(s) left the DEM between time " << previousTime_ << " and "
+        << nLost << " particle(s) left the DEM between time " << t0 << " and "
         << mesh_.time().timeName()
         << (outlets_.size() ? " outside every outlet of openSystem in " : ", and there is no outlet (openSystem) in ")
         << dict_.name() << " (the first: particle " << id << ", last seen at " << x << ")" << nl
