@@ -112,6 +112,7 @@ coarseDemCoupling::coarseDemCoupling
     createOutputFields();
     dem_.reset(new liggghtsDem(mesh, dict_));
     checkDemUnits(dem_->lammps(), mesh, dict_);    // DEM box and particles against the mesh
+    checkDemCoarseGraining(dem_->lammps(), cgFactor_, dict_);
     checkDemTimestep(dem_->lammps(), dict_);   // vs Rayleigh and Hertz times: warn / stop
     keepRestartForces_ = dem_->restarted();
 
@@ -147,8 +148,12 @@ void coarseDemCoupling::couple
 {
     ++nCouplings_;
     pullParticles();                           // particles_ from the DEM, ghosts_ from the neighbours
-    // the momentum exchanged over the last DEM segment, unless particles entered or left in it
-    compareExchangeInTime(U, inventory_.update(particles_));
+    // the particles that entered and left (the loss guard), and the momentum exchanged over the last
+    // DEM segment unless particles entered or left in it
+    timers_.start(stageTimers::monitor);
+    const bool segmentChanged = inventory_.update(particles_);
+    timers_.stop();
+    compareExchangeInTime(U, segmentChanged);
     const cdc_particles cp = coreParticles();  // NaN positions and bad radii are caught by the core
     const cdc_particles cg = {int32_t(ghosts_.size()), ghosts_.x.data(), ghosts_.radius.data(),
                               reinterpret_cast<const int64_t*>(ghosts_.id.data()), nullptr};
