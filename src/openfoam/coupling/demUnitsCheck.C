@@ -7,6 +7,7 @@
 #include "lammps.h"
 #include "atom.h"
 #include "domain.h"
+#include "force.h"
 
 void Foam::checkDemUnits(LAMMPS_NS::LAMMPS* lmp, const fvMesh& mesh, const dictionary& couplingDict)
 {
@@ -47,5 +48,23 @@ void Foam::checkDemUnits(LAMMPS_NS::LAMMPS* lmp, const fvMesh& mesh, const dicti
             << "the largest DEM particle (diameter " << 2*rMaxAll << " m) is " << 2*rMaxAll/meanCell
             << " times the mean CFD cell (" << meanCell << " m): the DEM script and the mesh are most"
             << " likely in different units (both must be in metres)" << exit(FatalIOError);
+    }
+}
+
+void Foam::checkDemCoarseGraining(LAMMPS_NS::LAMMPS* lmp, scalar factor, const dictionary& couplingDict)
+{
+    // LIGGGHTS-PUBLIC 3.8 has no coarse-graining command (force->cg() is 1 and cg_active() false):
+    // its particles are the grains, with contact models of their own size, and the factor is the
+    // coupling's alone. A LIGGGHTS that sets its own factor must set this one.
+    LAMMPS_NS::Force& force = *lmp->force;
+    if (!force.cg_active()) return;
+    const scalar dem = force.cg_max();
+    if (mag(dem - factor) > 1e-12*dem)
+    {
+        FatalIOErrorInFunction(couplingDict)
+            << "entry coarseGrainingFactor " << factor << " in " << couplingDict.name() << " disagrees"
+            << " with the DEM's coarse-graining factor " << dem << " (its script "
+            << couplingDict.lookupOrDefault<fileName>("demScript", "") << "): set both to the same value"
+            << exit(FatalIOError);
     }
 }
