@@ -7,7 +7,8 @@
 #   - a drain box that misses the drain plane: the run stops at the first particle that leaves,
 #     naming it and openSystem;
 #   - the DEM not deleting at the drain (delete_atoms no): warned once, naming the outlet;
-#   - an outlet box outside the mesh, and a misspelt entry of a region: errors naming the entry.
+#   - an outlet box outside the mesh, and a misspelt entry of a region: errors naming the entry;
+#   - the water's RAS k-epsilon model (Allrun -kEpsilon) runs with the coupling.
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
@@ -20,6 +21,7 @@ rm -rf "$work"; mkdir -p "$work"
 variant() {
     mkdir -p "$work/$1"
     (cd "$top/tutorials/feedAndDrain" && cp -r 0.orig DEM constant system Allrun Allclean check.py "$work/$1/")
+    rm -f "$work/$1"/system/*.orig "$work/$1"/constant/*.orig
     rm -rf "$work/$1/constant/polyMesh"
 }
 # check DIR: check.py's lines, counted
@@ -37,6 +39,18 @@ for v in serial np2; do
     "$work/$v/Allrun" -np $np > "$work/$v.log" 2>&1 || result fail "feedAndDrain $v: Allrun failed (see $work/$v.log)"
     check "$work/$v"
 done
+
+# the water's k-epsilon model (the round-jet constants of Weaver & Miskovic 2023) runs with the
+# coupling: selected as in OpenFOAM, its coefficients as given, the same inventory
+variant kEpsilon
+if "$work/kEpsilon/Allrun" -kEpsilon > "$work/kEpsilon.log" 2>&1 &&
+   grep -q "Selecting RAS turbulence model kEpsilon" "$work/kEpsilon/log.coarseDemFoam" &&
+   grep -A3 "^kEpsilonCoeffs" "$work/kEpsilon/log.coarseDemFoam" | grep -q "C1 *1.52;"; then
+    result ok "feedAndDrain -kEpsilon: coarseDemFoam ran with RAS kEpsilon, C1 1.52 C2 1.90"
+else
+    result fail "feedAndDrain -kEpsilon: the run failed or did not use kEpsilon with C1 1.52 (see $work/kEpsilon/log.coarseDemFoam)"
+fi
+check "$work/kEpsilon"
 
 variant restart
 if "$work/restart/Allrun" -endTime 0.3 > "$work/restart.log" 2>&1 &&
