@@ -175,6 +175,10 @@ check_warns particle_partly_outside 's/^alphaMin .*/alphaMin 0.3;/' "Particles p
     "sed -i 's/^fix *cfd.*/create_atoms 1 single 0.0003 0.005 0.045 units box\nset atom 2001 diameter 0.001 density 2500\n&/' DEM/in.liggghts"
 check mirror_patch_unknown '$a mirrorPatches ( inlett );' "mirrorPatches in" 
 check mirror_patch_unknown_lists '$a mirrorPatches ( inlett );' "inlett matches no patch of the mesh"
+# centre on a mesh of half-size cells: each 1 mm particle alone fills 3.1 cells' worth of one cell,
+# beyond the packing limit 1 - alphaMin = 0.7: warned once, naming the particle and the entries
+check_warns parcel_fills_cell 's/^voidFractionModel .*/voidFractionModel centre;/' \
+    "alone fills 3.1" "sed -i 's/(10 10 50)/(20 20 100)/' system/blockMeshDict && blockMesh > log.blockMesh 2>&1"
 check_warns deltaT_replaced_said 's/^couplingInterval .*/couplingInterval 125;/' \
     "it replaces deltaT 0.001 of"
 # a serial run ends without OpenFOAM's "Finalizing MPI, but was initialized elsewhere" warning

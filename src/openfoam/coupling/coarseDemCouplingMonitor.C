@@ -128,6 +128,44 @@ void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
     }
 }
 
+// A particle whose kernel puts more than the packing limit 1 - alphaMin into one cell by itself (a
+// grain larger than the cells with the centre method, or a coarse-grained parcel): the limiter then
+// moves the excess at every step, and alpha_p no longer says where the solid is. Smoothing spreads
+// alpha_p after the kernels, so the check is for unsmoothed fields only.
+void coarseDemCoupling::checkParcelFill()
+{
+    if (warnedParcelFill_ || voidFraction_.smoothingName() != "off") return;
+    const cdc_kernels* k = voidFraction_.kernels();
+    const int32_t* offsets = cdc_kernels_offsets(k);
+    const int32_t* cells = cdc_kernels_cells(k);
+    const double* weights = cdc_kernels_weights(k);
+    const scalarField& V = mesh_.V();
+    scalar worst = 0;
+    label worstId = -1;
+    for (label i = 0; i < particles_.size(); ++i)
+    {
+        for (int32_t e = offsets[i]; e < offsets[i + 1]; ++e)
+        {
+            if (cells[e] >= V.size()) continue;   // a cell of another rank: checked there
+            const scalar fill = volume_[i]*weights[e]/V[cells[e]];
+            if (fill > worst) { worst = fill; worstId = label(particles_.id[i]); }
+        }
+    }
+    const scalar worstAll = returnReduce(worst, maxOp<scalar>());
+    const scalar limit = 1 - voidFraction_.alphaMin();
+    if (worstAll <= limit) return;
+    const label id = returnReduce(worst == worstAll ? worstId : -1, maxOp<label>());
+    WarningInFunction
+        << "particle " << id << " alone fills " << worstAll << " of a cell's volume at time "
+        << mesh_.time().timeName() << ", beyond the packing limit 1 - alphaMin = " << limit << " ("
+        << dict_.name() << ": voidFractionModel " << voidFraction_.method() << ", coarseGrainingFactor "
+        << cgFactor_ << ")" << nl
+        << "    the limiter moves the excess to neighbouring cells at every step (the Coupling line counts"
+        << " it): use a method that spreads a particle over several cells (bigParticle, divided, twoGrid)"
+        << " or diffusion smoothing, or smaller grains" << endl;
+    warnedParcelFill_ = true;
+}
+
 void coarseDemCoupling::report(Ostream& os) const
 {
     const scalar volErr = solidVolumeParticles_ > 0
