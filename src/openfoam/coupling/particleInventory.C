@@ -72,19 +72,21 @@ particleInventory::particleInventory(const fvMesh& mesh, const dictionary& coupl
     elsewhere_.name = "elsewhere";
     lost_.name = "lost";
     readRestart();
-    if (Pstream::master())
-    {
-        const fileName dir = mesh_.time().globalPath()/"postProcessing"/"particleInventory"/mesh_.time().timeName();
-        mkDir(dir);
-        file_.reset(new OFstream(dir/"particleInventory.dat"));
-        OFstream& f = *file_;
-        f << "# particles entered and left since the run's first start (numbers, and mass in kg)" << nl
-          << "# time particles mass";
-        for (const region& r : inlets_) f << " in_" << r.name << " in_" << r.name << "_kg";
-        f << " in_elsewhere in_elsewhere_kg";
-        for (const region& r : outlets_) f << " out_" << r.name << " out_" << r.name << "_kg";
-        f << " lost lost_kg mass_balance_rel_err" << endl;
-    }
+}
+
+void particleInventory::openFile()
+{
+    const fileName dir =
+        mesh_.time().globalPath()/"postProcessing"/"particleInventory"/Time::timeName(mesh_.time().startTime().value());
+    mkDir(dir);
+    file_.reset(new OFstream(dir/"particleInventory.dat"));
+    OFstream& f = *file_;
+    f << "# particles entered and left since the run's first start (numbers, and mass in kg)" << nl
+      << "# time particles mass";
+    for (const region& r : inlets_) f << " in_" << r.name << " in_" << r.name << "_kg";
+    f << " in_elsewhere in_elsewhere_kg";
+    for (const region& r : outlets_) f << " out_" << r.name << " out_" << r.name << "_kg";
+    f << " lost lost_kg mass_balance_rel_err" << endl;
 }
 
 label particleInventory::find(const List<region>& regions, const point& x)
@@ -287,7 +289,11 @@ void particleInventory::report(Ostream& os) const
 
 void particleInventory::write(const demParticles& p)
 {
+    // a closed system in which nothing has entered or left writes nothing
+    if (!open() && nChanged_ == 0 && !tally_) return;
+    tally_ = true;
     checkPileUp(p);
+    if (Pstream::master() && !file_) openFile();
     if (file_)
     {
         OFstream& f = *file_;
@@ -314,6 +320,7 @@ void particleInventory::readRestart()
     if (!isFile(file)) return;
     IFstream is(file);
     const dictionary d(is);
+    tally_ = true;
     massStart_ = d.get<scalar>("massStart");
     auto read = [&d](region& r, const word& key)
     {
