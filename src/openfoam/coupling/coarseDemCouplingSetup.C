@@ -169,6 +169,11 @@ void coarseDemCoupling::printSummary(const wordList& names) const
         << ", drag on the fluid " << (implicitDrag_ ? "implicit" : "explicit") << ", on the particles "
         << (implicitParticleDrag_ ? "every DEM step" : "held for the CFD step") << ", forces " << names
         << ", DEM step " << dem_->timestep() << " s x " << couplingInterval_;
+    if (cgFactor_ != 1)
+    {
+        Info<< ", coarse-grained: each grain " << cgFactor_ << " real diameters, the drag of "
+            << pow3(cgFactor_) << " real particles (coarseGrainingFactor)";
+    }
     if (alphaRelaxationTime_ > 0)
     {
         Info<< ", fluid fraction relaxed over " << alphaRelaxationTime_ << " s (alphaRelaxationTime)";
