@@ -109,7 +109,10 @@ def station_stats(rows, cg, rho, T):
             hw = bins[i]["r_D"] + (g0 - 0.5) / (g0 - g1) * BIN
             break
     mdot = sum(rho * math.pi / 6 * d ** 3 for d, _, _ in rows) / T
-    return bins, hw, mdot
+    # the mass flux's rms radius (all grains inside 1.5 D): its width without a noisy maximum
+    inner = [r for _, r, _ in rows if r < NBIN * BIN * D]
+    r_rms = math.sqrt(sum(r * r for r in inner) / len(inner)) / D if inner else float("nan")
+    return bins, hw, mdot, len(rows), r_rms
 
 
 def read_gas(run):
@@ -160,7 +163,7 @@ def main():
             r["mdot_out"] = rate_between(inv, t0, t1, 2)
             for tag, _ in STATIONS:
                 rows = read_crossings(run, tag, t0, t1, float(info["demTimeOffset"]))
-                r["stations"][tag] = station_stats(rows, cg, 2950.0, T) + (len(rows),)
+                r["stations"][tag] = station_stats(rows, cg, 2950.0, T)
         res[name] = r
 
     # summary.csv
@@ -171,25 +174,27 @@ def main():
     head += ["grains_%s" % t for t, _ in STATIONS]
     head += ["Up_axis_%s_mps" % t for t, _ in STATIONS]
     head += ["flux_halfwidth_%s_D" % t for t, _ in STATIONS]
+    head += ["flux_rms_radius_%s_D" % t for t, _ in STATIONS]
     head += ["Uc_over_U0_10D", "Uc_over_U0_15D", "Uc_over_U0_19D", "gas_halfwidth_19D_D", "U0_mps"]
     lines = [",".join(head)]
     profile_lines = ["run,station,r_over_D,grains,Up_mean_mps,Up_sem_mps,Up_rms_mps,G_kg_m2s,G_over_Gmax"]
     for name, r in res.items():
         info = r["info"]
         row = [name, info["cg"], info["modelType"], "%g" % r["T"], str(info["wall_s"]),
-               "%.2f" % (base_wall / info["wall_s"]) if base_wall and info["wall_s"] else ""]
+               "%.2f" % (base_wall / info["wall_s"]) if base_wall and info["wall_s"] and info["laden"] == "1" else ""]
         if r["stations"]:
             row += ["%.4f" % (MDOT_FEED * 1e3), "%.4f" % (r["mdot_in"] * 1e3), "%.4f" % (r["mdot_out"] * 1e3)]
             row += ["%.4f" % (r["stations"][t][2] * 1e3) for t, _ in STATIONS]
             row += ["%d" % r["stations"][t][3] for t, _ in STATIONS]
             row += ["%.3f" % r["stations"][t][0][0]["u"] for t, _ in STATIONS]
             row += ["%.3f" % r["stations"][t][1] for t, _ in STATIONS]
+            row += ["%.4f" % r["stations"][t][4] for t, _ in STATIONS]
             for t, _ in STATIONS:
                 for b in r["stations"][t][0]:
                     profile_lines.append("%s,%s,%.2f,%d,%.4f,%.4f,%.4f,%.6g,%.4f" % (
                         name, t, b["r_D"], b["n"], b["u"], b["u_sem"], b["u_rms"], b["G"], b["G_Gmax"]))
         else:
-            row += [""] * (3 + 4 * len(STATIONS))
+            row += [""] * (3 + 6 * len(STATIONS))
         axis, r19 = r["gas"]
         if axis:
             U0 = interp(axis, 0.0)
@@ -225,6 +230,20 @@ def compare(r, ref, tag):
     return worst
 
 
+def flux_compare(r, ref, tag):
+    """Largest |G - G_ref| / max(G_ref) over bins with MIN_GRAINS grains in both, with its counting
+    (Poisson) error, at that bin; the two rms radii of the flux."""
+    gmax = max(c["G"] for c in ref["stations"][tag][0])
+    worst = (0.0, 0.0)
+    for b, c in zip(r["stations"][tag][0], ref["stations"][tag][0]):
+        if b["n"] >= MIN_GRAINS and c["n"] >= MIN_GRAINS:
+            d = abs(b["G"] - c["G"]) / gmax
+            err = math.hypot(b["G"] / math.sqrt(b["n"]), c["G"] / math.sqrt(c["n"])) / gmax
+            if d > worst[0]:
+                worst = (d, err)
+    return worst[0], worst[1], r["stations"][tag][4], ref["stations"][tag][4]
+
+
 def checks(res, out):
     L = ["# particleJet: the checks (postprocess.py)", ""]
     L.append("Velocities are compared in bins of 0.1 D holding at least %d grains in both runs; the error"
@@ -246,10 +265,25 @@ def checks(res, out):
                     d, sem, rd = compare(res[name], ref, tag)
                     L.append("| mean particle axial velocity profile vs cg1B, x = %g D | %s | within 3 %% of U_exit | %.2f %% (± %.2f %%) at r = %.2f D | %s |"
                              % (x, name, 100 * d, 100 * sem, rd, "yes" if d <= 0.03 else "no"))
+        for name in ("cg2B", "cg3B"):
+            if name not in res:
+                continue
+            for tag, x in STATIONS[1:]:
+                g, gerr, w, w_ref = flux_compare(res[name], ref, tag)
+                L.append("| mass-flux profile G vs cg1B (per bin, over cg1B's largest), x = %g D | %s | within 0.10 | %.3f (counting error ± %.3f) | %s |"
+                         % (x, name, g, gerr, "yes" if g <= 0.10 else
+                            "no: %.1f counting errors (a longer window would tell)" % (g / gerr)))
+                L.append("| rms radius of the mass flux vs cg1B, x = %g D | %s | within 5 %% | %.3f D vs %.3f D (%+.1f %%) | %s |"
+                         % (x, name, w, w_ref, 100 * (w / w_ref - 1), "yes" if abs(w / w_ref - 1) <= 0.05 else "no"))
+            if res[name].get("gas_numbers") and ref.get("gas_numbers"):
+                a, b = res[name]["gas_numbers"], ref["gas_numbers"]
+                d = max(abs(a[i] / b[i] - 1) for i in range(3))
+                L.append("| gas centreline velocity vs cg1B at 10, 15, 19 D | %s | within 2 %% | largest %.2f %% | %s |"
+                         % (name, 100 * d, "yes" if d <= 0.02 else "no"))
     if "cg3A" in res and "cg3B" in res:
         for tag, x in STATIONS[1:]:
             d, sem, rd = compare(res["cg3A"], res["cg3B"], tag)
-            L.append("| Model A vs Model B (cg 3), x = %g D | cg3A | within 1 %% of U_exit | %.2f %% (± %.2f %%) at r = %.2f D | %s |"
+            L.append("| Model A vs Model B (cg 3), x = %g D | cg3A | within 1 %% of U_exit | %.3f %% (± %.2f %%) at r = %.2f D | %s |"
                      % (x, 100 * d, 100 * sem, rd, "yes" if d <= 0.01 else "no"))
     gas = res.get("gas")
     if gas and gas.get("gas_numbers"):
@@ -297,7 +331,7 @@ def plots(res, out):
         if axis:
             U0 = interp(axis, 0.0)
             ax.plot([p[0] for p in axis], [p[1] / U0 for p in axis], label=name)
-    xs = [x / 2.0 for x in range(12, 41)]
+    xs = [x / 2.0 for x in range(16, 41)]   # the far-field law, from 8 D on
     ax.fill_between(xs, [5.8 / (x - 0) for x in xs], [6.06 / (x - 4) for x in xs], color="0.85", label="round jet, B 5.8-6.06, x0 0-4 D")
     ax.set_xlabel("x / D")
     ax.set_ylabel("U_c / U_0")
