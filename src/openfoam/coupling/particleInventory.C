@@ -307,6 +307,7 @@ void particleInventory::write(const demParticles& p)
     const fileName dir = mesh_.time().timePath()/"uniform";
     mkDir(dir);
     OFstream f(dir/"particleInventory");
+    f.precision(17);   // round-trip: a continued run's mass balance holds to round-off, whatever writePrecision
     f << "massStart " << massStart_ << ";" << nl;
     for (const region& r : inlets_) f << "in_" << r.name << " (" << r.n << " " << r.mass << ");" << nl;
     for (const region& r : outlets_) f << "out_" << r.name << " (" << r.n << " " << r.mass << ");" << nl;
