@@ -191,14 +191,8 @@ for F in (2, 3):
 EOF
 )
 rc=$?
-n=0
-while IFS= read -r line; do
-    case "$line" in
-        PASS:*) result ok "${line#PASS: }"; n=$((n + 1)) ;;
-        FAIL:*) result fail "${line#FAIL: }"; n=$((n + 1)) ;;
-        *) echo "    $line" ;;
-    esac
-done <<< "$checks"
+results_from <<< "$checks"
+n=$nread
 # 2 settling velocities, 2 solid volumes, 3 factors, 2 single grains
 [ $rc -eq 0 ] && [ $n -eq 9 ] || result fail "coarse graining: the analysis ended with status $rc after $n of 9 checks"
 finish

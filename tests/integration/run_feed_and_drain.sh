@@ -25,12 +25,7 @@ variant() {
     rm -rf "$work/$1/constant/polyMesh"
 }
 # check DIR: check.py's lines, counted
-check() {
-    local line
-    while IFS= read -r line; do
-        case "$line" in PASS:*) result ok "${line#PASS: }" ;; FAIL:*) result fail "${line#FAIL: }" ;; esac
-    done < <(/usr/bin/python3 "$1/check.py" "$1")
-}
+check() { results_from < <(/usr/bin/python3 "$1/check.py" "$1"); }
 cp_box() { sed -i "s|outlets { drain { box [^;]*; } }|outlets { drain { $2 } }|" "$work/$1/constant/couplingProperties"; }
 
 for v in serial np2; do

@@ -27,15 +27,8 @@ grep -q "coarse-grained: each grain 3 real diameters, the drag of 27 real partic
     result ok "particleJet demo: the log names the coarse-graining factor 3 (the drag of 27 real particles per grain)" ||
     result fail "particleJet demo: no coarse-graining line with factor 3 in $log"
 
-# the python checks print PASS:/FAIL: lines; count them here
-count() {
-    local line
-    while IFS= read -r line; do
-        case "$line" in PASS:*) result ok "${line#PASS: }" ;; FAIL:*) result fail "${line#FAIL: }" ;; *) echo "$line" ;; esac
-    done
-}
 # the last inventory against the DEM's counts at the same time (post/counts.txt, every coupling)
-count < <(/usr/bin/python3 - "$run" <<'PY'
+results_from < <(/usr/bin/python3 - "$run" <<'PY'
 import re, sys
 run = sys.argv[1]
 t, inv = None, None
@@ -67,7 +60,7 @@ PY
 )
 /usr/bin/python3 "$work/postprocess.py" -o "$work/results" -window 0.02 0.045 "$run" > "$work/post.log" 2>&1 ||
     result fail "particleJet demo: postprocess.py failed (see $work/post.log)"
-count < <(/usr/bin/python3 - "$work/results/summary.csv" <<'PY'
+results_from < <(/usr/bin/python3 - "$work/results/summary.csv" <<'PY'
 import csv, sys
 row = next(csv.DictReader(open(sys.argv[1])))
 feed = float(row["mdot_feed_gps"])

@@ -85,14 +85,19 @@ def rate_between(inv, t0, t1, col):
     return (b[col] - a[col]) / (b[0] - a[0]) if b[0] > a[0] else float("nan")
 
 
-def station_stats(rows, cg, rho, T):
+def grain_mass(d, rho):
+    """A grain's mass: cg^3 real particles' (the solid mass it stands for)."""
+    return rho * math.pi / 6 * d ** 3
+
+
+def station_stats(rows, rho, T):
     bins = []
     for i in range(NBIN):
         r0, r1 = i * BIN * D, (i + 1) * BIN * D
         sel = [r for r in rows if r0 <= r[1] < r1]
         n = len(sel)
         area = math.pi * (r1 * r1 - r0 * r0)
-        mass = sum(rho * math.pi / 6 * (d / cg) ** 3 * cg ** 3 for d, _, _ in sel)   # real solid mass
+        mass = sum(grain_mass(d, rho) for d, _, _ in sel)
         mean = sum(u for _, _, u in sel) / n if n else float("nan")
         var = sum((u - mean) ** 2 for _, _, u in sel) / (n - 1) if n > 1 else float("nan")
         bins.append({"r_D": (i + 0.5) * BIN, "n": n, "u": mean, "u_rms": math.sqrt(var) if n > 1 else float("nan"),
@@ -108,7 +113,7 @@ def station_stats(rows, cg, rho, T):
         if g0 >= 0.5 > g1:
             hw = bins[i]["r_D"] + (g0 - 0.5) / (g0 - g1) * BIN
             break
-    mdot = sum(rho * math.pi / 6 * d ** 3 for d, _, _ in rows) / T
+    mdot = sum(grain_mass(d, rho) for d, _, _ in rows) / T
     # the mass flux's rms radius (all grains inside 1.5 D): its width without a noisy maximum
     inner = [r for _, r, _ in rows if r < NBIN * BIN * D]
     r_rms = math.sqrt(sum(r * r for r in inner) / len(inner)) / D if inner else float("nan")
@@ -153,7 +158,6 @@ def main():
     for run in a.runs:
         info = read_info(run)
         name = info["name"]
-        cg = float(info["cg"])
         t0, t1 = a.window if a.window else (float(info["tAverage"]), float(info["endTime"]))
         T = t1 - t0
         r = {"info": info, "T": T, "stations": {}, "gas": read_gas(run)}
@@ -163,7 +167,7 @@ def main():
             r["mdot_out"] = rate_between(inv, t0, t1, 2)
             for tag, _ in STATIONS:
                 rows = read_crossings(run, tag, t0, t1, float(info["demTimeOffset"]))
-                r["stations"][tag] = station_stats(rows, cg, 2950.0, T)
+                r["stations"][tag] = station_stats(rows, 2950.0, T)
         res[name] = r
 
     # summary.csv
