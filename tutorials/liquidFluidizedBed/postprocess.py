@@ -3,6 +3,8 @@
 
     postprocess.py RUN -method M -modelType A|B -U U -tstart T0 -tend T1 -demdt DT -wall S -mode short|full
                    [-width W]     (the tube's width in mm, Allrun -width; default 10)
+                   [-drag L]      (the run's drag law, Allrun -drag: DiFelice (default), Gidaspow,
+                                   KochHill; eps_drag_equilibrium is that law's)
 
 Writes RUN/results/result.csv (the row of results/summary.csv), RUN/results/details.csv (further
 numbers), RUN/results/bedHeight.csv (time series over the whole run) and
@@ -130,6 +132,7 @@ def main():
     for k in ("U", "tstart", "tend", "demdt", "wall"):
         ap.add_argument("-" + k, type=float, required=True)
     ap.add_argument("-width", type=float, default=10.0)
+    ap.add_argument("-drag", default="DiFelice", choices=ref.DRAG_LAWS)
     a = ap.parse_args()
     global A, W
     W = a.width * 1e-3
@@ -189,7 +192,7 @@ def main():
     dp_sim, dp_sem = float(dp[pw].mean()), batch_sem(dp[pw])
     dp_weight = (ref.RHO_P - rho_f) * g * vs / A
     dp_rel = (dp_sim - dp_weight) / dp_weight
-    e_eq, e_rz = ref.eps_drag_equilibrium(a.U), ref.eps_richardson_zaki(a.U)
+    e_eq, e_rz = ref.eps_drag_equilibrium(a.U, a.drag), ref.eps_richardson_zaki(a.U)
     n_last = len(dumps[-1][1]["z"])
 
     res = os.path.join(a.run, "results")
@@ -215,10 +218,10 @@ def main():
         for i, v in enumerate(prof):
             f.write("%.2f,%.4f\n" % (1e3 * 0.5 * (edges[i] + edges[i + 1]), v))
 
-    print("%s: eps_sim %.4f +- %.4f (drag equilibrium %.4f: %+.4f; Richardson-Zaki %.4f), eps_plateau %.4f, "
+    print("%s: eps_sim %.4f +- %.4f (%s drag equilibrium %.4f: %+.4f; Richardson-Zaki %.4f), eps_plateau %.4f, "
           "H_c %.2f mm, drift in window %+.4f; dp %.2f +- %.2f Pa vs weight %.2f Pa (%+.2f %%); "
           "distributor carries %.2f Pa, side-wall normal %.2f Pa; max overlap %.2f %% d; wall %.0f s"
-          % (name, eps_sim, eps_sem, e_eq, eps_sim - e_eq, e_rz, eps_pl, 1e3 * hc_mean, drift, dp_sim, dp_sem,
+          % (name, eps_sim, eps_sem, a.drag, e_eq, eps_sim - e_eq, e_rz, eps_pl, 1e3 * hc_mean, drift, dp_sim, dp_sem,
              dp_weight, 100 * dp_rel, sup_bottom, sup_side, 100 * overlap, a.wall))
     if a.mode == "short":
         ok = True

@@ -8,17 +8,25 @@ Case (Zhang et al., Phys. Fluids 35, 113330 (2023) §V.C and Table III, big spec
 2016): N = 1146 spheres, d = 1 mm, rho_p = 2000 kg/m3, water rho_f = 1000 kg/m3, nu = 1e-6 m2/s,
 g = 9.81 m/s2, tube cross-section A = 10 x 10 mm.
 
-1. eps_drag_equilibrium(U): the homogeneous-bed equilibrium of the code's Di Felice law
-   (src/openfoam/forceModels/DiFeliceDrag.C, Di Felice, Int. J. Multiphase Flow 20, 153 (1994);
-   Zhang et al. eqs. A4-A7). The code's drag on a particle is
-       f = K u_r,  K = pi/8 rho_f d^2 alpha^(2-chi) (0.63 sqrt|u_r| + 4.8 sqrt(nu/(alpha d)))^2
-   i.e. f = pi/8 Cd(Re) rho_f d^2 alpha^(2-chi) |u_r| u_r with Cd = (0.63 + 4.8/sqrt(Re))^2,
-   chi = 3.7 - 0.65 exp(-(1.5 - log10 Re)^2/2) and Re = alpha |u_r| d/nu (the default
-   reynoldsNumber superficial). In a homogeneous bed at rest, alpha = eps and the interstitial slip
-   is u_r = U/eps, so Re = U d/nu and f = pi/8 Cd rho_f d^2 U^2 eps^(-chi).
+1. eps_drag_equilibrium(U, law): the homogeneous-bed equilibrium of the code's drag law `law`
+   (DiFelice, the tutorial's default; Gidaspow; KochHill: Allrun -drag). Every law gives a force
+   f = K(eps, Re) u_r on a particle at rest, with the interstitial slip u_r = U/eps and the
+   superficial Reynolds number Re = eps |u_r| d/nu = U d/nu (the form of each law below is the
+   one in src/openfoam/forceModels/<law>Drag.C, written again here from its header):
+   - DiFelice (Di Felice, Int. J. Multiphase Flow 20, 153 (1994); Zhang et al. eqs. A4-A7):
+       f = pi/8 Cd rho_f d^2 eps^(2-chi) u_r^2 = pi/8 Cd rho_f d^2 U^2 eps^(-chi),
+       Cd = (0.63 + 4.8/sqrt(Re))^2, chi = 3.7 - 0.65 exp(-(1.5 - log10 Re)^2/2);
+   - Gidaspow (Gidaspow 1994; Ergun below eps = 0.8, Wen & Yu above):
+       eps <= 0.8: K = V (150 (1 - eps) mu/(eps d^2) + 1.75 rho_f u_r/d),
+       eps >  0.8: K = V 0.75 Cd rho_f eps u_r/d eps^-2.65, Cd = 24/Re (1 + 0.15 Re^0.687);
+   - KochHill (Hill, Koch & Ladd, J. Fluid Mech. 448 (2001), in the form of Benyahia et al.,
+     Powder Technol. 162 (2006)): K = V 18 mu eps^2 (F0(phi) + F3(phi) Re/2)/d^2, phi = 1 - eps,
+       F0 = (1 + 3 sqrt(phi/2) + 135/64 phi ln phi + 16.14 phi)/(1 + 0.681 phi - 8.48 phi^2
+            + 8.16 phi^3) for phi < 0.4, 10 phi/(1 - phi)^3 above; F3 = 0.0673 + 0.212 phi
+            + 0.0232/(1 - phi)^5.
    Model A (the particle gets drag + gradPForce -V grad p; the fluid -eps grad p + eps rho_f g -
    n f = 0 with n V = 1 - eps): f (1 + (1 - eps)/eps) = (rho_p - rho_f) V g, so
-       f = eps (rho_p - rho_f) g pi d^3/6  <=>  (3/4) Cd rho_f U^2 eps^(-chi) / d = eps (rho_p - rho_f) g
+       f = eps (rho_p - rho_f) g pi d^3/6.
    Model B without gradPForce (drag / eps, plus Archimedes rho_f V g): f/eps = (rho_p - rho_f) V g,
    the same equation. Solved for eps by bisection on (0.2, 1).
 2. eps_richardson_zaki(U): Richardson & Zaki (Trans. Instn Chem. Engrs 32, 35 (1954)),
@@ -48,14 +56,38 @@ def difelice_cd_chi(re):
     return cd, chi
 
 
-def eps_drag_equilibrium(U):
-    """Voidage where the code's Di Felice drag on a particle at rest equals eps (rho_p - rho_f) V g."""
-    re = U * D / NU                       # = alpha |u_r| d/nu with u_r = U/eps (superficial Re)
-    cd, chi = difelice_cd_chi(re)
+DRAG_LAWS = ("DiFelice", "Gidaspow", "KochHill")
 
+
+def drag_force(law, eps, U):
+    """Drag (N) on a particle at rest in a homogeneous bed of voidage eps at superficial velocity U."""
+    re, ur, mu, vol = U * D / NU, U / eps, NU * RHO_F, math.pi / 6 * D ** 3
+    if law == "DiFelice":
+        cd, chi = difelice_cd_chi(re)
+        return math.pi / 8 * cd * RHO_F * D ** 2 * U ** 2 * eps ** (-chi)
+    if law == "Gidaspow":
+        if eps <= 0.8:
+            k = vol * (150 * (1 - eps) * mu / (eps * D ** 2) + 1.75 * RHO_F * ur / D)
+        else:
+            cd_re = 24 * (1 + 0.15 * re ** 0.687) if re < 1000 else 0.44 * re
+            k = vol * 0.75 * cd_re * NU / (eps * D) * RHO_F * eps / D * eps ** -2.65
+        return k * ur
+    if law == "KochHill":
+        phi = 1 - eps
+        if phi < 0.4:
+            f0 = ((1 + 3 * math.sqrt(phi / 2) + (135 / 64 * phi * math.log(phi) if phi > 0 else 0) + 16.14 * phi)
+                  / (1 + 0.681 * phi - 8.48 * phi ** 2 + 8.16 * phi ** 3))
+        else:
+            f0 = 10 * phi / (1 - phi) ** 3
+        f3 = 0.0673 + 0.212 * phi + 0.0232 / (1 - phi) ** 5
+        return vol * 18 * mu * eps ** 2 * (f0 + 0.5 * f3 * re) / D ** 2 * ur
+    raise ValueError("unknown drag law %r (%s)" % (law, " ".join(DRAG_LAWS)))
+
+
+def eps_drag_equilibrium(U, law="DiFelice"):
+    """Voidage where the code's drag law on a particle at rest equals eps (rho_p - rho_f) V g."""
     def residual(eps):                    # drag per particle / (eps x buoyant weight) - 1
-        drag = math.pi / 8 * cd * RHO_F * D ** 2 * U ** 2 * eps ** (-chi)
-        return drag / (eps * (RHO_P - RHO_F) * G * math.pi / 6 * D ** 3) - 1
+        return drag_force(law, eps, U) / (eps * (RHO_P - RHO_F) * G * math.pi / 6 * D ** 3) - 1
 
     lo, hi = 0.2, 1.0                     # residual(lo) > 0 (too much drag), residual(hi) < 0
     if not (residual(lo) > 0 > residual(hi)):

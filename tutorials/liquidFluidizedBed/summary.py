@@ -3,6 +3,9 @@
 liquidFluidizedBed from the runs of Allrun -all.
 
     summary.py TUTORIAL_DIR MODE
+    summary.py TUTORIAL_DIR MODE -dragLaws   results/dragLaws.csv and dragLaws.md: bigParticle with
+                                             each drag law (Allrun -dragLaws, and the matrix's Di Felice
+                                             runs) against that law's own equilibrium voidage
 
 Rows in the order method (centre divided bigParticle diffusion), modelType (A B), U (0.015 0.020
 0.025); a missing run is reported and left out. Prints the checks against the targets (voidage
@@ -22,8 +25,51 @@ def read_row(path):
     return rows[0], list(rows[0].keys())
 
 
+def drag_laws(here, mode):
+    """The drag-law table: the same MET/MISSED targets as the matrix, per law."""
+    res = os.path.join(here, "results")
+    suffix = "" if mode == "full" else "_" + mode
+    out, header = [], None
+    for law in ("DiFelice", "Gidaspow", "KochHill"):
+        for mt in MODELS:
+            for u in US:
+                name = "bigParticle_%s_U%s_%s%s" % (mt, u, mode, "" if law == "DiFelice" else "_" + law)
+                path = os.path.join(here, "runs", name, "results", "result.csv")
+                if not os.path.isfile(path):
+                    print("summary.py: run %s missing" % name)
+                    continue
+                r, header = read_row(path)
+                r["drag"] = law
+                out.append(r)
+    if not out:
+        print("summary.py: no drag-law runs of mode %s" % mode)
+        return 1
+    fields = ["drag"] + header
+    with open(os.path.join(res, "dragLaws%s.csv" % suffix), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, lineterminator="\n")
+        w.writeheader()
+        w.writerows(out)
+    with open(os.path.join(res, "dragLaws%s.md" % suffix), "w") as f:
+        f.write("| drag law | model | U (m/s) | eps_sim ± sem | its drag eq. | eps - eq. | R-Z | dp_rel_err | wall (s) |\n")
+        f.write("|" + "---|" * 9 + "\n")
+        for r in out:
+            de = float(r["eps_sim"]) - float(r["eps_drag_equilibrium"])
+            f.write("| %s | %s | %s | %s ± %s | %s | %+.3f | %s | %+.1f %% | %.0f |\n" % (
+                r["drag"], r["modelType"], r["U"], r["eps_sim"], r["eps_sem"], r["eps_drag_equilibrium"], de,
+                r["eps_richardson_zaki"], 100 * float(r["dp_rel_err"]), float(r["wall_s"])))
+    for r in out:
+        de = float(r["eps_sim"]) - float(r["eps_drag_equilibrium"])
+        dp = float(r["dp_rel_err"])
+        print("%-6s %s %s U %s: eps %s (its drag eq. %s, %+.4f; R-Z %s), dp %+.2f %%" % (
+            "MET" if abs(de) <= 0.02 and abs(dp) <= 0.02 else "MISSED", r["drag"], r["modelType"], r["U"],
+            r["eps_sim"], r["eps_drag_equilibrium"], de, r["eps_richardson_zaki"], 100 * dp))
+    return 0
+
+
 def main():
     here, mode = sys.argv[1], sys.argv[2]
+    if sys.argv[3:] == ["-dragLaws"]:
+        return drag_laws(here, mode)
     res = os.path.join(here, "results")
     os.makedirs(os.path.join(res, "runs"), exist_ok=True)
     rows, details, missing = [], [], []
