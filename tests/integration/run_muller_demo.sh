@@ -139,4 +139,13 @@ else
     echo "FAIL: $tag: -continue with a changed case file did not refuse naming it (see $log.refused)"; py=1
 fi
 cp "$log.cp" "$run_dir/constant/couplingProperties"
+# -continue on other ranks than the run's: refused (the DEM restart and fields are per decomposition)
+ran=$(awk 'NF >= 2 {n = $2} END {print n}' "$run_dir/wall_seconds.txt")
+other=$((3 - ran))
+if ! "$case_dir/Allrun" -mode demo -model "$model" -mesh "$mesh" -U "$U" -continue -np "$other" > "$log.ranks" 2>&1 &&
+   grep -q "cannot continue on $other rank(s): it ran on $ran" "$log.ranks"; then
+    echo "PASS: $tag: -continue on $other rank(s) of a run made on $ran refuses, naming both"
+else
+    echo "FAIL: $tag: -continue on $other rank(s) of a run made on $ran did not refuse (see $log.ranks)"; py=1
+fi
 exit $py

@@ -10,7 +10,7 @@ as an image over the width (y) and the height (z), with the particles of the run
 the same plane. Right: the time-averaged, depth-averaged gas fraction from particles binned by the
 cell of their centre at z = 16.4 mm (results/, from profiles.py) with its batch-means error, against
 the MR data of the same inlet velocity (validation/muller/data). Reads OpenFOAM's ascii and binary
-formats. Serial runs only (a decomposed run's fields are in processor*/).
+formats. A parallel run is read at its reconstructed last write time (Allrun runs reconstructPar).
 """
 import os, re, struct, sys
 
