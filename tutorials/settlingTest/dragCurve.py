@@ -124,6 +124,15 @@ def analyse(run):
     return u, drift, warnings, float(clock[-1]) if clock else float("nan")
 
 
+def git_output(args):
+    """git's output in this tree, or "" where git is not installed (a fresh Debian machine: the
+    project needs no git) or this is not a clone."""
+    try:
+        return subprocess.run(["git", "-C", HERE] + args, capture_output=True, text=True).stdout.strip()
+    except OSError:
+        return ""
+
+
 def main(argv):
     laws, res, quick, rerun, out = LAWS, sorted(CASES), False, True, os.path.join(HERE, "results")
     i = 0
@@ -145,10 +154,8 @@ def main(argv):
             sys.exit(f"dragCurve.py: unknown option {a}")
     pairs = QUICK if quick else [(law, r, ALL_CHECKS) for law in laws for r in res]
     os.makedirs(out, exist_ok=True)
-    commit = subprocess.run(["git", "-C", HERE, "log", "-1", "--format=%h"], capture_output=True,
-                            text=True).stdout.strip() or "unknown"
-    dirty = subprocess.run(["git", "-C", HERE, "status", "--porcelain", "--", "../../src", "."],
-                           capture_output=True, text=True).stdout.strip()
+    commit = git_output(["log", "-1", "--format=%h"]) or "unknown"
+    dirty = git_output(["status", "--porcelain", "--", "../../src", "."])
     results, fails, run_commits = [], 0, set()
     for law, target, checks in pairs:
         rho_p, nu, height, t_end = CASES[target]
