@@ -46,7 +46,8 @@ import math, os, sys
 
 N, D, RHO_P, RHO_F, NU, G = 1146, 1e-3, 2000.0, 1000.0, 1e-6, 9.81
 A = 0.010 * 0.010
-VS = N * math.pi / 6 * D ** 3
+VP = math.pi / 6 * D ** 3               # one particle's volume
+VS = N * VP
 
 
 def difelice_cd_chi(re):
@@ -61,7 +62,7 @@ DRAG_LAWS = ("DiFelice", "Gidaspow", "KochHill")
 
 def drag_force(law, eps, U):
     """Drag (N) on a particle at rest in a homogeneous bed of voidage eps at superficial velocity U."""
-    re, ur, mu, vol = U * D / NU, U / eps, NU * RHO_F, math.pi / 6 * D ** 3
+    re, ur, mu, vol = U * D / NU, U / eps, NU * RHO_F, VP
     if law == "DiFelice":
         cd, chi = difelice_cd_chi(re)
         return math.pi / 8 * cd * RHO_F * D ** 2 * U ** 2 * eps ** (-chi)
@@ -87,7 +88,7 @@ def drag_force(law, eps, U):
 def eps_drag_equilibrium(U, law="DiFelice"):
     """Voidage where the code's drag law on a particle at rest equals eps (rho_p - rho_f) V g."""
     def residual(eps):                    # drag per particle / (eps x buoyant weight) - 1
-        return drag_force(law, eps, U) / (eps * (RHO_P - RHO_F) * G * math.pi / 6 * D ** 3) - 1
+        return drag_force(law, eps, U) / (eps * (RHO_P - RHO_F) * G * VP) - 1
 
     lo, hi = 0.2, 1.0                     # residual(lo) > 0 (too much drag), residual(hi) < 0
     if not (residual(lo) > 0 > residual(hi)):

@@ -14,6 +14,9 @@ B bed heights H_c within 2 %) as MET / MISSED lines (not PASS/FAIL: the matrix i
 """
 import csv, os, shutil, sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import references as ref
+
 METHODS = ("centre", "divided", "bigParticle", "diffusion")
 MODELS = ("A", "B")
 US = ("0.015", "0.020", "0.025")
@@ -25,12 +28,26 @@ def read_row(path):
     return rows[0], list(rows[0].keys())
 
 
+def eps_error(r):
+    """eps_sim minus its drag-law equilibrium, for the tables and the targets."""
+    return float(r["eps_sim"]) - float(r["eps_drag_equilibrium"])
+
+
+def targets_met(r):
+    """The matrix's targets for one row: voidage within 0.02 of the equilibrium, dp within 2 %."""
+    return "MET" if abs(eps_error(r)) <= 0.02 and abs(float(r["dp_rel_err"])) <= 0.02 else "MISSED"
+
+
+def mode_suffix(mode):
+    return "" if mode == "full" else "_" + mode
+
+
 def drag_laws(here, mode):
     """The drag-law table: the same MET/MISSED targets as the matrix, per law."""
     res = os.path.join(here, "results")
-    suffix = "" if mode == "full" else "_" + mode
+    suffix = mode_suffix(mode)
     out, header = [], None
-    for law in ("DiFelice", "Gidaspow", "KochHill"):
+    for law in ref.DRAG_LAWS:
         for mt in MODELS:
             for u in US:
                 name = "bigParticle_%s_U%s_%s%s" % (mt, u, mode, "" if law == "DiFelice" else "_" + law)
@@ -53,16 +70,13 @@ def drag_laws(here, mode):
         f.write("| drag law | model | U (m/s) | eps_sim ± sem | its drag eq. | eps - eq. | R-Z | dp_rel_err | wall (s) |\n")
         f.write("|" + "---|" * 9 + "\n")
         for r in out:
-            de = float(r["eps_sim"]) - float(r["eps_drag_equilibrium"])
             f.write("| %s | %s | %s | %s ± %s | %s | %+.3f | %s | %+.1f %% | %.0f |\n" % (
-                r["drag"], r["modelType"], r["U"], r["eps_sim"], r["eps_sem"], r["eps_drag_equilibrium"], de,
+                r["drag"], r["modelType"], r["U"], r["eps_sim"], r["eps_sem"], r["eps_drag_equilibrium"], eps_error(r),
                 r["eps_richardson_zaki"], 100 * float(r["dp_rel_err"]), float(r["wall_s"])))
     for r in out:
-        de = float(r["eps_sim"]) - float(r["eps_drag_equilibrium"])
-        dp = float(r["dp_rel_err"])
         print("%-6s %s %s U %s: eps %s (its drag eq. %s, %+.4f; R-Z %s), dp %+.2f %%" % (
-            "MET" if abs(de) <= 0.02 and abs(dp) <= 0.02 else "MISSED", r["drag"], r["modelType"], r["U"],
-            r["eps_sim"], r["eps_drag_equilibrium"], de, r["eps_richardson_zaki"], 100 * dp))
+            targets_met(r), r["drag"], r["modelType"], r["U"], r["eps_sim"], r["eps_drag_equilibrium"],
+            eps_error(r), r["eps_richardson_zaki"], 100 * float(r["dp_rel_err"])))
     return 0
 
 
@@ -91,7 +105,7 @@ def main():
     if not rows:
         print("summary.py: no runs of mode %s" % mode)
         return 1
-    suffix = "" if mode == "full" else "_" + mode
+    suffix = mode_suffix(mode)
     for fname, hdr, rr in (("summary%s.csv" % suffix, header, rows), ("details%s.csv" % suffix, dheader, details)):
         with open(os.path.join(res, fname), "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=hdr, lineterminator="\n")
@@ -110,7 +124,7 @@ def main():
             d = dk[(r["method"], r["modelType"], r["U"])]
             f.write("| %s | %s | %s | %s ± %s | %s | %s | %+.3f | %s | %.2f | %.2f ± %.2f | %+.1f %% | %.2f | %+.1f %% | %.1f | %.2f | %.0f |\n" % (
                 r["method"], r["modelType"], r["U"], r["eps_sim"], r["eps_sem"], r["eps_drag_equilibrium"],
-                r["eps_richardson_zaki"], float(r["eps_sim"]) - float(r["eps_drag_equilibrium"]), d["eps_plateau"],
+                r["eps_richardson_zaki"], eps_error(r), d["eps_plateau"],
                 float(d["H_c_mm"]), float(r["dp_sim"]), float(d["dp_sem"]), 100 * float(r["dp_rel_err"]),
                 float(d["support_bottom_Pa"]),
                 100 * ((float(r["dp_sim"]) + float(d["support_bottom_Pa"])) / float(r["dp_weight"]) - 1),
@@ -119,11 +133,9 @@ def main():
     # targets
     hc = {(d["method"], d["modelType"], d["U"]): float(d["H_c_mm"]) for d in details}
     for r in rows:
-        de = float(r["eps_sim"]) - float(r["eps_drag_equilibrium"])
-        dp = float(r["dp_rel_err"])
         print("%-6s %s %s U %s: eps %s (drag eq. %s, %+.4f), dp %s Pa (%+.2f %%)" % (
-            "MET" if abs(de) <= 0.02 and abs(dp) <= 0.02 else "MISSED", r["method"], r["modelType"], r["U"],
-            r["eps_sim"], r["eps_drag_equilibrium"], de, r["dp_sim"], 100 * dp))
+            targets_met(r), r["method"], r["modelType"], r["U"], r["eps_sim"], r["eps_drag_equilibrium"],
+            eps_error(r), r["dp_sim"], 100 * float(r["dp_rel_err"])))
     for m in METHODS:
         for u in US:
             k = "%.3f" % float(u)
@@ -141,8 +153,6 @@ def main():
     except ImportError:
         print("summary.py: matplotlib not available, no plot")
         return 0
-    sys.path.insert(0, here)
-    import references as ref
     uu = [0.013 + 0.0005 * i for i in range(27)]
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
     ax.plot(uu, [ref.eps_drag_equilibrium(u) for u in uu], "k-", label="Di Felice drag equilibrium")
