@@ -10,13 +10,28 @@
 
 #include <string.h>
 
-/* The contribution of particle i, q (ncomp values), added to its kernel cells in cdc_spread's order,
- * so the sums are bit for bit those of cdc_spread on an array of the same q. */
-static void add_particle(const int32_t *off, const int32_t *cells, const double *w, int32_t i, const double *q,
-                         int ncomp, double *out)
+/* Particle i's implicit contributions, in one pass over its kernel: Ksl += w Kr, KslUs += w Kv and
+ * f_fluid += w q. Each array still gets its sums in cdc_spread's order (particle by particle, entry by
+ * entry), so the results are bit for bit those of three spreads; one pass reads the kernel once
+ * instead of three times (a tenth of a Gaussian coupling: perf of bench's slab). */
+static void add_implicit(const int32_t *off, const int32_t *cells, const double *w, int32_t i, double Kr,
+                         const double Kv[3], const double q[3], double *Ksl, double *KslUs, double *f_fluid)
+{
+    for (int32_t e = off[i]; e < off[i + 1]; ++e) {
+        const size_t c = (size_t)cells[e];
+        const double we = w[e];
+        Ksl[c] += we * Kr;
+        for (int d = 0; d < 3; ++d) KslUs[3 * c + d] += we * Kv[d];
+        for (int d = 0; d < 3; ++d) f_fluid[3 * c + d] += we * q[d];
+    }
+}
+
+/* Particle i's explicit force density: f_fluid += w q. */
+static void add_explicit(const int32_t *off, const int32_t *cells, const double *w, int32_t i, const double q[3],
+                         double *f_fluid)
 {
     for (int32_t e = off[i]; e < off[i + 1]; ++e)
-        for (int d = 0; d < ncomp; ++d) out[(size_t)cells[e] * ncomp + d] += w[e] * q[d];
+        for (int d = 0; d < 3; ++d) f_fluid[3 * (size_t)cells[e] + d] += w[e] * q[d];
 }
 
 static void per_volume(const cdc_mesh *m, int ncomp, double *out)
@@ -66,18 +81,18 @@ cdc_status cdc_exchange_sources(const cdc_kernels *k, const cdc_exchange_in *in,
         if (implicit) {
             /* -Ksl U + KslUs: the drag at the fluid's new velocity, K (u - v) per particle */
             const double Kr = in->K[i] / rho;
-            add_particle(off, cells, w, i, &Kr, 1, Ksl);
-            for (int d = 0; d < 3; ++d) q[d] = Kr * v[d];
-            add_particle(off, cells, w, i, q, 3, KslUs);
+            double Kv[3];
+            for (int d = 0; d < 3; ++d) Kv[d] = Kr * v[d];
             /* the other reacting forces, and, when the drag used a fluid velocity u_f from other
              * (background) kernels, the difference K (u_f - u_k) the implicit part does not carry */
             for (int d = 0; d < 3; ++d) q[d] = -f[d] / rho;
             if (uk)
                 for (int d = 0; d < 3; ++d) q[d] -= Kr * (uf[d] - uk[d]);
+            add_implicit(off, cells, w, i, Kr, Kv, q, Ksl, KslUs, f_fluid);
         } else {
             for (int d = 0; d < 3; ++d) q[d] = -(in->K[i] * (uf[d] - v[d]) + f[d]) / rho;
+            add_explicit(off, cells, w, i, q, f_fluid);
         }
-        add_particle(off, cells, w, i, q, 3, f_fluid);
     }
     if (implicit) {
         per_volume(m, 1, Ksl);

@@ -37,8 +37,10 @@ static cdc_status store_facets(cdc_context *ctx, int32_t n, const double *centre
     free(ctx->facets);
     free(ctx->facet_offsets);
     free(ctx->facet_items);
+    free(ctx->facet_item_same);
     ctx->facets = NULL;
     ctx->facet_offsets = ctx->facet_items = NULL;
+    ctx->facet_item_same = NULL;
     ctx->n_facets = 0;
     if (n <= 0) return CDC_OK;
 
@@ -77,7 +79,9 @@ static cdc_status store_facets(cdc_context *ctx, int32_t n, const double *centre
     const size_t nb = (size_t)ctx->facet_nbin[0] * (size_t)ctx->facet_nbin[1] * (size_t)ctx->facet_nbin[2];
     ctx->facet_offsets = calloc(nb + 1, sizeof(int32_t));
     ctx->facet_items = malloc((size_t)n * sizeof(int32_t));
-    if (!ctx->facet_offsets || !ctx->facet_items) return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
+    ctx->facet_item_same = malloc((size_t)n);
+    if (!ctx->facet_offsets || !ctx->facet_items || !ctx->facet_item_same)
+        return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
     size_t *bin = malloc((size_t)n * sizeof *bin);
     if (!bin) return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
     for (int32_t f = 0; f < n; ++f) {
@@ -90,6 +94,17 @@ static cdc_status store_facets(cdc_context *ctx, int32_t n, const double *centre
     for (size_t b = nb; b > 0; --b) ctx->facet_offsets[b] = ctx->facet_offsets[b - 1];
     ctx->facet_offsets[0] = 0;
     free(bin);
+    /* A bin's items come in facet order, so the faces of one flat wall follow each other: mark those
+     * in the plane of the item before (to 1e-12 of a bin, far inside the 1e-9 of a kernel's reach
+     * that cdc_wall_planes_near calls one plane), so that a query tests each plane once per bin. */
+    for (size_t b = 0; b < nb; ++b)
+        for (int32_t q = ctx->facet_offsets[b]; q < ctx->facet_offsets[b + 1]; ++q) {
+            ctx->facet_item_same[q] = 0;
+            if (q == ctx->facet_offsets[b]) continue;
+            const cdc_plane *a = &ctx->facets[ctx->facet_items[q - 1]].plane, *c = &ctx->facets[ctx->facet_items[q]].plane;
+            const double dn = a->normal[0] * c->normal[0] + a->normal[1] * c->normal[1] + a->normal[2] * c->normal[2];
+            ctx->facet_item_same[q] = dn > 1.0 - 1e-12 && fabs(cdc_plane_offset(a, c->origin)) <= 1e-12 * h;
+        }
     return CDC_OK;
 }
 
@@ -139,9 +154,14 @@ cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radi
         for (int32_t j = b0[1]; j <= b1[1]; ++j)
             for (int32_t i = b0[0]; i <= b1[0]; ++i) {
                 const size_t b = bin_index(ctx, i, j, k);
+                int plane_settled = 0; /* the previous item's plane is taken, or too far */
                 for (int32_t q = ctx->facet_offsets[b]; q < ctx->facet_offsets[b + 1]; ++q) {
+                    if (plane_settled && ctx->facet_item_same[q]) continue; /* the same answer again */
+                    plane_settled = 0;
                     const cdc_facet *fc = ctx->facets + ctx->facet_items[q];
-                    if (cdc_dist2(fc->owner, x) > r2 || -cdc_plane_offset(&fc->plane, x) >= radius) continue;
+                    if (cdc_dist2(fc->owner, x) > r2) continue;
+                    plane_settled = 1;
+                    if (-cdc_plane_offset(&fc->plane, x) >= radius) continue;
                     int known = 0; /* the same plane as one already taken (a flat wall's faces) */
                     for (int p = 0; p < *n_planes && !known; ++p) {
                         const cdc_plane *o = planes + p;

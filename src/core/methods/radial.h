@@ -19,19 +19,24 @@ static inline cdc_status cdc_radial_kernel(cdc_context *ctx, const cdc_particle_
     int n_images = 0;
     cdc_status st = cdc_radial_neighbourhood(ctx, p, radius, wall_mirror, out->search, images, &n_images);
     if (st != CDC_OK) return st;
-    const cdc_mesh *m = ctx->mesh;
     const size_t n = ctx->near_cells.n;
     if (cdc_ivec_reserve(out->cells, out->cells->n + n + 1) || cdc_dvec_reserve(out->weights, out->weights->n + n + 1))
         return cdc_fail(ctx, CDC_ERR_NOMEM, "kernel: out of memory");
+    /* local output cursors: through out-> the compiler must reload the counts after every store */
+    int32_t *cells = out->cells->v + out->cells->n;
+    double *weights = out->weights->v + out->weights->n;
+    size_t taken = 0;
     for (size_t q = 0; q < n; ++q) {
         const int32_t c = ctx->near_cells.v[q];
-        const double *xc = m->cell_centres + 3 * (size_t)c;
-        double w = profile(cdc_dist2(xc, images[0]), arg);
-        for (int k = 1; k < n_images; ++k) w += profile(cdc_dist2(xc, images[k]), arg);
+        const double *xv = ctx->cell_xv + 4 * (size_t)c; /* centre, then volume */
+        double w = profile(cdc_dist2(xv, images[0]), arg);
+        for (int k = 1; k < n_images; ++k) w += profile(cdc_dist2(xv, images[k]), arg);
         if (w <= 0.0) continue;
-        out->cells->v[out->cells->n++] = c;
-        out->weights->v[out->weights->n++] = w * m->cell_volumes[c];
+        cells[taken] = c;
+        weights[taken++] = w * xv[3];
     }
+    out->cells->n += taken;
+    out->weights->n += taken;
     out->distinct = 1; /* each cell of the neighbourhood once */
     /* No cell centre inside the search sphere (a particle much smaller than its cell): the
      * kernel falls back to the particle centroid method. In parallel this is decided when the
