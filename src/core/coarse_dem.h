@@ -231,7 +231,7 @@ cdc_status cdc_exchange_sources(const cdc_kernels *k, const cdc_exchange_in *in,
 typedef struct cdc_diffusion_params {
     double bandwidth;         /* b > 0 (metres) */
     int n_steps;              /* pseudo-time steps (default 4 when 0) */
-    double tolerance;         /* relative CG tolerance (default 1e-10 when 0) */
+    double tolerance;         /* relative CG tolerance (default 1e-6 when 0) */
     int max_iterations;       /* default 1000 when 0 */
     int d_rule;               /* 1: D = 0.001 where cell size > 4 d */
     double particle_diameter; /* d for d_rule */
