@@ -1,0 +1,72 @@
+"""Compare the Mueller demo's profiles across the tolerances of one setting (bench/tolerance_study.sh).
+
+    tolerance_study.py WORK RUN STAGE OUT REF T2 T3 ...
+
+WORK/<tol>/tutorials/fluidizedBedMuller/runs/RUN is the demo run of each tolerance. For each tolerance
+T, quantity (depth-averaged binned gas fraction and v_z) and MR height: the RMS over the profile's
+points of profile_T - profile_REF, beside the RMS spread of the reference profile about its mean (the
+size of the profile itself): OUT.csv. From each run's log, the solver's STAGE timer and its share of
+the timed stages: OUT_timers.csv.
+"""
+import csv
+import math
+import os
+import re
+import sys
+
+HEIGHTS = ["15", "16.4", "20", "25", "31.2", "35"]
+QUANTITIES = ["voidfractiondepthbinned", "vzdepthbinned"]
+
+
+def run_dir(work, run, tol):
+    return os.path.join(work, tol, "tutorials", "fluidizedBedMuller", "runs", run)
+
+
+def profile(path, quantity, z):
+    with open(os.path.join(path, "results", "profile_%s_z%smm.csv" % (quantity, z))) as f:
+        rows = list(csv.reader(line for line in f if not line.startswith("#")))
+    return [float(r[1]) for r in rows[1:]]
+
+
+def rms(values):
+    return math.sqrt(sum(v * v for v in values) / len(values))
+
+
+def stage_timer(path, stage):
+    """(seconds, share %) of the stage from the last 'Stage timers' line of the solver log."""
+    line = None
+    with open(os.path.join(path, "log.coarseDemFoam")) as f:
+        for text in f:
+            if text.startswith("Stage timers"):
+                line = text
+    m = re.search(r"\b%s ([0-9.eE+-]+) \(([0-9.]+)%%\)" % re.escape(stage), line or "")
+    if not m:
+        sys.exit("tolerance_study.py: no %s stage timer in %s/log.coarseDemFoam" % (stage, path))
+    return float(m.group(1)), float(m.group(2))
+
+
+def main(argv):
+    if len(argv) < 6:
+        sys.exit(__doc__)
+    work, run, stage, out, ref, others = argv[0], argv[1], argv[2], argv[3], argv[4], argv[5:]
+    with open(out + ".csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["tolerance", "reference", "quantity", "z_mm", "rms_difference", "rms_spread_of_reference"])
+        for q in QUANTITIES:
+            for z in HEIGHTS:
+                a = profile(run_dir(work, run, ref), q, z)
+                mean = sum(a) / len(a)
+                spread = rms([x - mean for x in a])
+                for t in others:
+                    b = profile(run_dir(work, run, t), q, z)
+                    w.writerow([t, ref, q, z, "%.4g" % rms([x - y for x, y in zip(b, a)]), "%.4g" % spread])
+    with open(out + "_timers.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["tolerance", stage + "_s", stage + "_share_pct"])
+        for t in [ref] + others:
+            s, share = stage_timer(run_dir(work, run, t), stage)
+            w.writerow([t, "%.2f" % s, "%.1f" % share])
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

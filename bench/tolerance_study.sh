@@ -1,0 +1,74 @@
+#!/bin/bash
+# bench/tolerance_study.sh -- does a solver tolerance of the Mueller tutorial change a result?
+#
+# Runs the Mueller demo (tutorials/fluidizedBedMuller -mode demo -np 1: 0.1 s of the bubbling bed)
+# once per tolerance of one setting, each in its own copy of the tutorial under
+# bench/work/tolerance_<setting>/<tol>/, and compares the depth-averaged, binned profiles (gas fraction
+# and particle v_z at the six MR heights) of each with those of the reference tolerance (the first of
+# the list). The bed is chaotic: any difference, however small, grows until the runs are different
+# samples of the same bed. A tolerance is harmless when its profiles differ from the reference's no
+# more than those of a tighter tolerance do.
+#
+#   bench/tolerance_study.sh -setting diffusion|pressure [-values "REF T2 T3 ..."]
+#
+# Settings:
+#   diffusion  diffusionProps tolerance (the smoothing's CG), model diffusion (b = 6 d); stage alphaP.
+#              Default values "1e-10 1e-12 1e-6"
+#   pressure   the tolerance of p and pFinal in system/fvSolution (GAMG; relTol 0.01 and 0 as the
+#              tutorial's), model bigParticle; stage fluid. Default values "1e-8 1e-10 1e-6"
+# Written: bench/results/tolerance_<setting>.csv (per tolerance, quantity and height: the RMS over the
+# profile of its difference from the reference), tolerance_<setting>_timers.csv (the setting's stage
+# timer and its share of each run) and tolerance_<setting>_info.txt (command, commit).
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/.." && pwd)
+setting= values=
+while [ $# -gt 0 ]; do
+    case "$1" in
+        -setting) setting="$2"; shift 2 ;;
+        -values) values="$2"; shift 2 ;;
+        *) echo "usage: $0 -setting diffusion|pressure [-values \"REF T2 T3 ...\"]" >&2; exit 2 ;;
+    esac
+done
+case "$setting" in
+    diffusion) model=diffusion stage=alphaP; values=${values:-"1e-10 1e-12 1e-6"} ;;
+    pressure) model=bigParticle stage=fluid; values=${values:-"1e-8 1e-10 1e-6"} ;;
+    *) echo "bench/tolerance_study: -setting must be diffusion or pressure (got '$setting')" >&2; exit 2 ;;
+esac
+for t in $values; do
+    /usr/bin/python3 -c "import sys; t = float(sys.argv[1]); sys.exit(0 if 0 < t < 1 else 1)" "$t" 2> /dev/null ||
+        { echo "bench/tolerance_study: tolerance '$t' must be a number in (0, 1)" >&2; exit 2; }
+done
+# the case files of one tolerance, in a copy of the tutorial
+set_tolerance() { # tutorial-copy tol
+    case "$setting" in
+        diffusion) sed -i "s|^diffusionProps .*|diffusionProps      { bandwidth 7.2e-3; tolerance $2; }   // b = 6 d|" \
+                       "$1/constant/couplingProperties" ;;
+        pressure) sed -i "s|^\( *p  *{ solver GAMG; smoother GaussSeidel; tolerance \)[^;]*;|\1$2;|" "$1/system/fvSolution"
+                  grep -q "tolerance $2; relTol 0.01" "$1/system/fvSolution" ||
+                      { echo "bench/tolerance_study: the p entry of $1/system/fvSolution is not the one this script edits" >&2; return 1; } ;;
+    esac
+}
+work="$here/work/tolerance_$setting"
+mkdir -p "$work" "$here/results"
+for t in $values; do
+    d="$work/$t"
+    rm -rf "$d"
+    mkdir -p "$d/tutorials"
+    cp -r "$root/tutorials/fluidizedBedMuller" "$d/tutorials/"
+    rm -rf "$d/tutorials/fluidizedBedMuller/runs"
+    set_tolerance "$d/tutorials/fluidizedBedMuller" "$t" || exit 1
+    echo "bench/tolerance_study: $setting tolerance $t"
+    ( cd "$d/tutorials/fluidizedBedMuller" &&
+      COARSEDEM_DIR="$root" ./Allrun -mode demo -model "$model" -np 1 > "$d/log.Allrun" 2>&1 ) ||
+        { echo "bench/tolerance_study: the demo failed with $setting tolerance $t ($d/log.Allrun)" >&2; exit 1; }
+done
+out="$here/results/tolerance_$setting"
+# shellcheck disable=SC2086
+/usr/bin/python3 "$here/tolerance_study.py" "$work" "${model}_dx1_U0.9_demo" "$stage" "$out" $values || exit 1
+{
+    echo "command: bench/tolerance_study.sh -setting $setting -values \"$values\""
+    echo "commit: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)$([ -n "$(git -C "$root" status --porcelain --untracked-files=no 2>/dev/null)" ] && echo -dirty)"
+    echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+    echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
+} > "${out}_info.txt"
+cat "$out.csv" "${out}_timers.csv"
