@@ -154,14 +154,13 @@ cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radi
         for (int32_t j = b0[1]; j <= b1[1]; ++j)
             for (int32_t i = b0[0]; i <= b1[0]; ++i) {
                 const size_t b = bin_index(ctx, i, j, k);
-                int plane_settled = 0; /* the previous item's plane is taken, or too far */
+                int plane_settled = 0; /* the previous item's plane is already among the planes */
                 for (int32_t q = ctx->facet_offsets[b]; q < ctx->facet_offsets[b + 1]; ++q) {
                     if (plane_settled && ctx->facet_item_same[q]) continue; /* the same answer again */
                     plane_settled = 0;
                     const cdc_facet *fc = ctx->facets + ctx->facet_items[q];
-                    if (cdc_dist2(fc->owner, x) > r2) continue;
-                    plane_settled = 1;
-                    if (-cdc_plane_offset(&fc->plane, x) >= radius) continue;
+                    if (cdc_dist2(fc->owner, x) > r2 || -cdc_plane_offset(&fc->plane, x) >= radius) continue;
+                    plane_settled = 1; /* taken below, or known already */
                     int known = 0; /* the same plane as one already taken (a flat wall's faces) */
                     for (int p = 0; p < *n_planes && !known; ++p) {
                         const cdc_plane *o = planes + p;
