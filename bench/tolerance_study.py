@@ -14,6 +14,9 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "validation", "muller"))
+from compare import read_profile  # noqa: E402  (the reader of profiles.py's CSV files)
+
 HEIGHTS = ["15", "16.4", "20", "25", "31.2", "35"]
 QUANTITIES = ["voidfractiondepthbinned", "vzdepthbinned"]
 
@@ -23,9 +26,8 @@ def run_dir(work, run, tol):
 
 
 def profile(path, quantity, z):
-    with open(os.path.join(path, "results", "profile_%s_z%smm.csv" % (quantity, z))) as f:
-        rows = list(csv.reader(line for line in f if not line.startswith("#")))
-    return [float(r[1]) for r in rows[1:]]
+    """The time-averaged values of one profile of a run."""
+    return read_profile(os.path.join(path, "results", "profile_%s_z%smm.csv" % (quantity, z)))[2]
 
 
 def rms(values):
