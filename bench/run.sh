@@ -44,11 +44,9 @@ END {
 }' results/kernels.csv > results/ratios.md
 cat results/ratios.md
 
-commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-dirty=$(git status --porcelain -- . ../src/core 2>/dev/null | grep -q . && echo " (with uncommitted changes)")
 {
     echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-    echo "commit: $commit$dirty"
+    echo "commit: $(../etc/codeVersion bench src/core)"
     echo "host: $(uname -m), $(nproc) cores, load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"
     echo "command: bench/run.sh $*"
     echo "elapsed (kernel_bench): $((ms / 1000)).$(printf %03d $((ms % 1000))) s"

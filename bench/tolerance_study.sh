@@ -67,7 +67,7 @@ out="$here/results/tolerance_$setting"
 /usr/bin/python3 "$here/tolerance_study.py" "$work" "${model}_dx1_U0.9_demo" "$stage" "$out" $values || exit 1
 {
     echo "command: bench/tolerance_study.sh -setting $setting -values \"$values\""
-    echo "commit: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)$([ -n "$(git -C "$root" status --porcelain --untracked-files=no 2>/dev/null)" ] && echo -dirty)"
+    echo "commit: $("$root/etc/codeVersion")"
     echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
     echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
 } > "${out}_info.txt"

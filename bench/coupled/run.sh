@@ -175,7 +175,7 @@ done
 python3 "$here/ratios.py" "$csv" > "$results/ratios.md" || exit 1
 {
     echo "command: bench/coupled/run.sh -couplings $couplings -methods \"$methods\" -np \"$nps\" -state $state_t"
-    echo "commit: $(git -C "$top" rev-parse --short HEAD 2>/dev/null || echo unknown)$([ -n "$(git -C "$top" status --porcelain --untracked-files=no 2>/dev/null)" ] && echo -dirty)"
+    echo "commit: $("$top/etc/codeVersion")"
     echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
     echo "machine: $(nproc) cores; load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"
 } > "$results/run_info.txt"
