@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Unit checks of the Mueller validation scripts' bookkeeping of stopped and continued runs:
 profiles.drop_superseded (samples of a stopped segment re-sampled by its continuation) and
-summary.log_segments (wall seconds per start, cut where the continuation started, MPI ranks), and
-summary.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs), and
+summary.log_segments (wall seconds per start, cut where the continuation started, MPI ranks; a
+run's pauses taken off its wall time and its stage shares), summary.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs), and
 window.py on a synthetic run (errors per averaging window against ones computed here, its refusals).
 Prints PASS/FAIL per check and "N passed, N failed"."""
 import csv, importlib.util, math, os, random, subprocess, sys, tempfile, time
@@ -58,6 +58,24 @@ with tempfile.TemporaryDirectory() as tmp:
           "wall seconds per start %s (expected 200 = up to t = 0.2 where the run continued, 0, 101), "
           "ranks %s" % (clocks, [s["nprocs"] for s in segs]))
 
+    # a run stopped (SIGSTOP) for 500 s during its kernel stage at t = 0.15: steps of 1 s, stage
+    # timers printed at 0.1, 0.2, 0.3 (kernel 10 s per 0.1 s, DEM 90 s; 500 s more in 0.1-0.2)
+    log = os.path.join(tmp, "logpause")
+    with open(log, "w") as f:
+        f.write("nProcs : 2\nCreate time\n")
+        wall = 0.0
+        for i in range(1, 31):
+            wall += 501.0 if i == 15 else 1.0
+            f.write("Time = %g\n\nProgress: t = %g s of 0.3 s, %d steps, wall %g s, estimated left 1 s\n" % (i / 100, i / 100, i, wall))
+            if i % 10 == 0:
+                k = 10.0 * i / 10 + (500.0 if i >= 20 else 0.0)
+                f.write("Stage timers (s, share): kernel %g (1%%) DEM %g (1%%) fluid 0 (0%%)\n" % (k, 9.0 * i))
+    seg = summary.log_segments(log)[0]
+    share = seg["stages"]["kernel"] / (seg["stages"]["kernel"] + seg["stages"]["DEM"])
+    check(abs(seg["clock"] - seg["paused"] - 30.0) < 1e-9 and len(seg["pauses"]) == 1 and abs(share - 0.1) < 1e-12,
+          "a paused run: wall %g s less %g s paused (expected 30 s of steps), kernel share %.4f without the "
+          "paused interval (expected 0.1; with it 0.63)" % (seg["clock"], seg["paused"], share))
+
     # the profiles figure: two cases at 0.9 m/s (one without the 15 mm profile, one without SEMs),
     # one at 0.6 m/s; the data of both speeds: 3 + 2 panels, each case where it has a profile
     data = os.path.join(tmp, "data")
@@ -81,7 +99,7 @@ with tempfile.TemporaryDirectory() as tmp:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     try:
-        n = summary.plot_profiles(out, rows, plt, data)
+        n = summary.plot_profiles(out, rows, plt, "midThickness", data)
         made = os.path.exists(os.path.join(out, "profiles_all_models.png"))
         err = ""
     except Exception as e:   # any failure of the figure is this check's failure

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Error against run time for the Mueller-bed runs of every model.
 
-    summary.py <out dir> <run dir> [<run dir> ...]
+    summary.py [-instrument depthBinned|midThickness] <out dir> <run dir> [<run dir> ...]
 
 For each run (tutorials/fluidizedBedMuller/runs/<model>_dx<..>_U<..>_<mode>): the RMS errors from
 results/comparison/errors.csv (compare.py), the wall time (per start of the solver, from its log or
@@ -10,10 +10,18 @@ wall_seconds.txt, summed over restarts) and the coupling share of it from the so
 summed; runs before the stages were renamed have other names, the same rule holds). Copies each run's
 profile CSVs and comparison plots to <out>/<run>_<commit>/ (runs of one model at different commits
 side by side) and writes <out>/error_vs_runtime.{csv,md,png}; the PNG labels each model's last run
-on the command line (give the runs oldest first) and shows its earlier runs as grey circles. Where a run also has the binned
-particle velocity (profile_vzbinned, binnedParticleFields on), its error is a further column.
+on the command line (give the runs oldest first) and shows its earlier runs as grey circles.
+
+The instrument of the headline columns and figures (RMS and maximum error, batch SEM, symmetrised
+and noise-removed RMS): `depthBinned` (default; the gas fraction and particle v_z averaged over the
+bed's depth, particles counted in the cell of their centre, independent of the method under test,
+as the MR data were measured: validation/muller/README.md) or `midThickness` (the method's own alpha
+and v_z on the mid-thickness line: the runs made before the depth-averaged profiles existed). The
+other instrument's RMS stays in further columns.
 <out>/profiles_all_models.png: for every MR data file at an inlet velocity of the runs (the data
-directory next to this script), each case's last run (model, dx/d, U, mode) against the data.
+directory next to this script), each case's last run (model, dx/d, U and mode) against the data.
+<out>/profiles_all_heights.png: each case's last run at every sampled height (15 ... 35 mm), gas
+fraction and particle v_z of the headline instrument, with the MR data where they exist.
 """
 import csv, glob, os, re, shutil, sys
 
@@ -22,8 +30,16 @@ from compare import read_profile
 
 DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
 
+# instrument: (errors.csv quantity of the gas fraction, of the particle v_z; profile file stems; words)
+INSTRUMENTS = {
+    "depthBinned": ("void_fraction_depth_binned", "vz_particle_depth_binned_m_per_s",
+                    "voidfractiondepthbinned", "vzdepthbinned", "depth-averaged, binned"),
+    "midThickness": ("void_fraction", "vz_particle_m_per_s", "voidfraction", "vz", "mid-thickness"),
+}
+HEIGHTS_MM = ("15", "16.4", "20", "25", "31.2", "35")
 
-def plot_profiles(out, rows, plt, data_dir=DATA_DIR):
+
+def plot_profiles(out, rows, plt, instrument, data_dir=DATA_DIR):
     """One panel per MR data file at an inlet velocity of the runs: each case's last run (a case:
     model, dx/d, U and mode, the run directory's name) against the data, its profile as copied to
     <out>, +-2 batch SEM as a band. Returns the number of panels."""
@@ -41,7 +57,7 @@ def plot_profiles(out, rows, plt, data_dir=DATA_DIR):
     fig, axes = plt.subplots(1, len(files), figsize=(5.5 * len(files), 4.2), squeeze=False)
     for ax, (path, U, q, h) in zip(axes[0], files):
         for name, r in latest.items():
-            sim = os.path.join(out, r["run"], f"profile_{q}_z{h}mm.csv")
+            sim = os.path.join(out, r["run"], f"profile_{stem_of(instrument, q)}_z{h}mm.csv")
             if inlet(name) != U or not os.path.exists(sim):
                 continue
             _, sx, sy, se = read_profile(sim)
@@ -59,11 +75,52 @@ def plot_profiles(out, rows, plt, data_dir=DATA_DIR):
                        "vz": "time-averaged particle v_z (m/s)"}.get(q, q))
         ax.set_title(f"U = {U:g} m/s, z = {h} mm")
         ax.legend(fontsize=7)
-    fig.suptitle("Mueller bed: each case's last run against the MR data (bands: +-2 batch SEM)")
+    fig.suptitle(f"Mueller bed: each case's last run against the MR data ({INSTRUMENTS[instrument][4]}; bands: +-2 batch SEM)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "profiles_all_models.png"), dpi=110)
     plt.close(fig)
     return len(files)
+
+def stem_of(instrument, q):
+    """The profile file stem of the instrument for the MR data's quantity q (voidfraction, vz)."""
+    return INSTRUMENTS[instrument][2 if q == "voidfraction" else 3]
+
+
+def plot_all_heights(out, rows, plt, instrument, data_dir=DATA_DIR):
+    """Two rows (gas fraction, particle v_z) by six heights: each case's last run, its profile with
+    +-2 batch SEM, and the MR data where they exist at the runs' inlet velocity."""
+    latest = {r["name"]: r for r in rows}
+    fig, axes = plt.subplots(2, len(HEIGHTS_MM), figsize=(3.2 * len(HEIGHTS_MM), 6.5), sharey="row")
+    for i, q in enumerate(("voidfraction", "vz")):
+        for ax, h in zip(axes[i], HEIGHTS_MM):
+            inlets = set()
+            for name, r in latest.items():
+                sim = os.path.join(out, r["run"], f"profile_{stem_of(instrument, q)}_z{h}mm.csv")
+                if not os.path.exists(sim):
+                    continue
+                _, sx, sy, se = read_profile(sim)
+                if not sx:
+                    continue
+                m = re.search(r"_U([0-9.]+)_", name)
+                inlets.add(m.group(1) if m else None)
+                line, = ax.plot([x * 1e3 for x in sx], sy, "-", lw=1, label=r["model"])
+                if all(e == e for e in se):
+                    ax.fill_between([x * 1e3 for x in sx], [y - 2 * e for y, e in zip(sy, se)],
+                                    [y + 2 * e for y, e in zip(sy, se)], color=line.get_color(), alpha=0.12, lw=0)
+            for U in sorted(u for u in inlets if u):
+                data = os.path.join(data_dir, f"mueller_U{U}_{q}_z{h}mm_MR.csv")
+                if os.path.exists(data):
+                    _, dx, dy, _ = read_profile(data)
+                    ax.plot([x * 1e3 for x in dx], dy, "ko", ms=3, label=f"MR, U = {U} m/s")
+            ax.set_title(f"z = {h} mm", fontsize=9)
+            ax.set_xlabel("x (mm)", fontsize=8)
+        axes[i][0].set_ylabel("gas fraction" if q == "voidfraction" else "particle v_z (m/s)")
+    axes[0][0].legend(fontsize=6)
+    fig.suptitle(f"Mueller bed, every sampled height ({INSTRUMENTS[instrument][4]}; bands: +-2 batch SEM)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "profiles_all_heights.png"), dpi=100)
+    plt.close(fig)
+
 
 def log_segments(log):
     """Per start of the solver (a log continued after a restart holds several, each beginning with
@@ -72,19 +129,26 @@ def log_segments(log):
     wall W s", DPMFoam's "Time = T" then "ClockTime = W". A start that was stopped and continued
     from its last write is counted up to the time the continuation started from: the stretch after
     it was computed again (and is counted there). Its stage timers were last printed at that write,
-    so they cover the same stretch."""
+    so they cover the same stretch.
+
+    Pauses: a long run stopped by SIGSTOP (the machine needed for something else) shows as one step
+    whose wall time is PAUSE_FACTOR times the segment's median step or more. The excess over the
+    median is the pause: taken off the segment's clock (seg["paused"], seg["pauses"]), and the
+    stage-timer intervals holding one are left out of the stage shares (seg["stages"] is then the
+    sum of the clean intervals), since the stage that was running when the run was stopped would
+    otherwise carry the whole pause."""
     segs, t, nprocs = [], None, 1
     for line in open(log, errors="replace"):
         m = re.match(r"nProcs\s*:\s*(\d+)", line)   # in OpenFOAM's banner, before "Create time"
         if m:
             nprocs = int(m.group(1))
         elif line.startswith("Create time"):
-            segs.append({"stages": None, "walls": [], "nprocs": nprocs})
+            segs.append({"stage_lines": [], "walls": [], "nprocs": nprocs})
             t, nprocs = None, 1
         elif not segs:
             continue
         elif line.startswith("Stage timers"):
-            segs[-1]["stages"] = {m.group(1): float(m.group(2)) for m in re.finditer(r"(\w+) ([0-9.eE+-]+) \(", line)}
+            segs[-1]["stage_lines"].append((t, {m.group(1): float(m.group(2)) for m in re.finditer(r"(\w+) ([0-9.eE+-]+) \(", line)}))
         elif line.startswith("Time = "):
             t = float(line.split()[2])
         else:
@@ -101,9 +165,33 @@ def log_segments(log):
     for seg in reversed(segs):
         walls = seg["walls"] if restart == float("inf") else [w for w in seg["walls"] if w[0] < restart]
         seg["clock"] = max((w[1] for w in walls), default=0.0)
+        steps = sorted(b[1] - a[1] for a, b in zip(walls, walls[1:]))
+        median = steps[len(steps) // 2] if steps else 0.0
+        seg["pauses"] = [(b[0], b[1] - a[1] - median) for a, b in zip(walls, walls[1:])
+                         if median > 0 and b[1] - a[1] >= PAUSE_FACTOR * median]
+        seg["paused"] = sum(p for _, p in seg["pauses"])
+        seg["stages"] = clean_stages(seg["stage_lines"], [t for t, _ in seg["pauses"]])
         if seg["walls"]:
             restart = min(restart, seg["walls"][0][0])
     return segs
+
+PAUSE_FACTOR = 100   # a step this many times the median step: the run was stopped, not slow
+
+
+def clean_stages(lines, pause_times):
+    """Stage seconds of a segment: its last stage-timer line, or without pauses, the sum of the
+    increments between consecutive lines (from zero at the start) whose interval holds no pause."""
+    if not lines:
+        return None
+    if not pause_times:
+        return lines[-1][1]
+    total, prev_t, prev = {}, float("-inf"), {}
+    for t, cum in lines:
+        if not any(prev_t < p <= t for p in pause_times):
+            for k, v in cum.items():
+                total[k] = total.get(k, 0.0) + v - prev.get(k, 0.0)
+        prev_t, prev = t, cum
+    return total
 
 # the solver's stage timers that are not the coupling's (src/openfoam/coupling/stageTimers.H)
 NOT_COUPLING = ("DEM", "fluid", "fields")
@@ -117,9 +205,17 @@ def stage_times(segs):
     return total or None
 
 def main():
-    if len(sys.argv) < 3:
+    args = sys.argv[1:]
+    instrument = "depthBinned"
+    if args[:1] == ["-instrument"]:
+        if len(args) < 2 or args[1] not in INSTRUMENTS:
+            sys.exit(f"summary.py: -instrument takes one of {', '.join(INSTRUMENTS)}")
+        instrument, args = args[1], args[2:]
+    if len(args) < 2:
         sys.exit(__doc__)
-    out, runs = sys.argv[1], sys.argv[2:]
+    out, runs = args[0], args[1:]
+    q_void, q_vz = INSTRUMENTS[instrument][:2]
+    other = INSTRUMENTS["midThickness" if instrument == "depthBinned" else "depthBinned"]
     os.makedirs(out, exist_ok=True)
     rows = []
     for run in runs:
@@ -141,8 +237,12 @@ def main():
         logs = [p for p in (os.path.join(run, "log.coarseDemFoam"), os.path.join(run, "log.DPMFoam")) if os.path.exists(p)]
         segs = log_segments(logs[0]) if logs else []
         if segs:   # every start, also one cut by a kill, with its MPI ranks (OpenFOAM's nProcs)
-            wall = sum(seg["clock"] for seg in segs)
-            core = sum(seg["clock"] * seg["nprocs"] for seg in segs)
+            wall = sum(seg["clock"] - seg["paused"] for seg in segs)
+            core = sum((seg["clock"] - seg["paused"]) * seg["nprocs"] for seg in segs)
+            pauses = [p for seg in segs for p in seg["pauses"]]
+            if pauses:
+                print(f"summary.py: {name}: {len(pauses)} pause(s) of the run taken off its wall time "
+                      f"(" + ", ".join(f"{p:.0f} s at t = {t:g} s" for t, p in pauses) + ") and left out of its stage shares")
             rank_set = sorted(set(seg["nprocs"] for seg in segs))
         else:
             wall = sum(float(t[0]) for t in starts)
@@ -157,14 +257,18 @@ def main():
         info = open(os.path.join(run, "results", "profiles_info.txt")).readline().split(";")[0].strip()
         label = f"{name}_{commit.replace(' ', '+')}"
         nan5 = (float("nan"),) * 5
-        void = errs.get(("void_fraction", "16.4"), nan5)
-        vz = errs.get(("vz_particle_m_per_s", "15"), nan5)
-        vzb = errs.get(("vz_particle_binned_m_per_s", "15"), nan5)
+        void = errs.get((q_void, "16.4"), nan5)
+        vz = errs.get((q_vz, "15"), nan5)
+        if void[0] != void[0] or vz[0] != vz[0]:
+            print(f"summary.py: {name}: no {instrument} errors in {path}: n/a in the headline columns"
+                  + (" (try -instrument midThickness)" if instrument == "depthBinned" else ""))
+        void_other = errs.get((other[0], "16.4"), nan5)
+        vz_other = errs.get((other[1], "15"), nan5)
         rows.append(dict(run=label, name=name, model=name.split("_")[0], wall=wall, core=core, ranks=ranks, commit=commit, coupling_share=coupling / total,
                          fluid_share=st.get("fluid", 0) / total, dem_share=st.get("DEM", 0) / total,
-                         void_rms=void[0], void_sem=void[2], void_sym=void[3], void_clean=void[4],
-                         vz_rms=vz[0], vz_sem=vz[2], vz_sym=vz[3], vz_clean=vz[4],
-                         vzb_rms=vzb[0], vzb_sem=vzb[2], window=info))
+                         void_rms=void[0], void_max=void[1], void_sem=void[2], void_sym=void[3], void_clean=void[4],
+                         vz_rms=vz[0], vz_max=vz[1], vz_sem=vz[2], vz_sym=vz[3], vz_clean=vz[4],
+                         void_other=void_other[0], vz_other=vz_other[0], window=info))
         dest = os.path.join(out, label)
         os.makedirs(dest, exist_ok=True)
         for f in glob.glob(os.path.join(run, "results", "*.csv")) + glob.glob(os.path.join(run, "results", "*.txt")):
@@ -172,26 +276,38 @@ def main():
         for f in glob.glob(os.path.join(run, "results", "comparison", "*")):
             shutil.copy(f, dest)
     with open(os.path.join(out, "error_vs_runtime.csv"), "w") as f:
-        f.write("run,model,commit,ranks,wall_time_s,core_seconds,coupling_share,fluid_share,dem_share,voidfraction_z16.4_rms,voidfraction_z16.4_mean_sem,vz_z15_rms_m_per_s,vz_z15_mean_sem,vz_binned_z15_rms_m_per_s,vz_binned_z15_mean_sem,"
-                "voidfraction_z16.4_rms_symmetrised,voidfraction_z16.4_rms_noise_removed,vz_z15_rms_symmetrised,vz_z15_rms_noise_removed\n")
+        # headline columns: the chosen instrument (column "instrument"); *_other_rms: the other one
+        f.write("run,model,commit,ranks,wall_time_s,core_seconds,coupling_share,fluid_share,dem_share,instrument,"
+                "voidfraction_z16.4_rms,voidfraction_z16.4_max,voidfraction_z16.4_mean_sem,voidfraction_z16.4_rms_symmetrised,voidfraction_z16.4_rms_noise_removed,"
+                "vz_z15_rms_m_per_s,vz_z15_max_m_per_s,vz_z15_mean_sem,vz_z15_rms_symmetrised,vz_z15_rms_noise_removed,"
+                "voidfraction_z16.4_other_rms,vz_z15_other_rms_m_per_s\n")
         for r in rows:
-            f.write(f"{r['run']},{r['model']},{r['commit']},{r['ranks']},{r['wall']:.0f},{r['core']:.0f},{r['coupling_share']:.3f},{r['fluid_share']:.3f},{r['dem_share']:.3f},"
-                    f"{r['void_rms']:.4f},{r['void_sem']:.4f},{r['vz_rms']:.4f},{r['vz_sem']:.4f},{r['vzb_rms']:.4f},{r['vzb_sem']:.4f},"
-                    f"{r['void_sym']:.4f},{r['void_clean']:.4f},{r['vz_sym']:.4f},{r['vz_clean']:.4f}\n")
+            f.write(f"{r['run']},{r['model']},{r['commit']},{r['ranks']},{r['wall']:.0f},{r['core']:.0f},{r['coupling_share']:.3f},{r['fluid_share']:.3f},{r['dem_share']:.3f},{instrument},"
+                    f"{r['void_rms']:.4f},{r['void_max']:.4f},{r['void_sem']:.4f},{r['void_sym']:.4f},{r['void_clean']:.4f},"
+                    f"{r['vz_rms']:.4f},{r['vz_max']:.4f},{r['vz_sem']:.4f},{r['vz_sym']:.4f},{r['vz_clean']:.4f},"
+                    f"{r['void_other']:.4f},{r['vz_other']:.4f}\n")
     with open(os.path.join(out, "error_vs_runtime.md"), "w") as f:
-        f.write("| run | commit | ranks | wall time (s) | core-seconds | coupling share | gas fraction RMS, z = 16.4 mm | particle v_z RMS, z = 15 mm (m/s) | binned particle v_z RMS, z = 15 mm (m/s) |\n|---|---|---|---|---|---|---|---|---|\n")
-        def cell(rms, sem, sym, clean):
+        head, tail = INSTRUMENTS[instrument][4], other[4]
+        f.write(f"| run | commit | ranks | wall time (s) | core-seconds | coupling share | gas fraction, z = 16.4 mm, {head}: RMS / max | "
+                f"particle v_z, z = 15 mm, {head}: RMS / max (m/s) | gas fraction RMS, {tail} | particle v_z RMS, {tail} (m/s) |\n"
+                "|---|---|---|---|---|---|---|---|---|---|\n")
+        def cell(rms, mx, sem, sym, clean):
+            if rms != rms:
+                return "n/a"
             more = "" if sym != sym else f"; sym. {sym:.3f}; noise removed {clean:.3f}"
-            return f"{rms:.3f} (SEM {sem:.3f}{more})"
+            return f"{rms:.3f} / {mx:.3f} (SEM {sem:.3f}{more})"
+        def bare(x):
+            return "n/a" if x != x else f"{x:.3f}"
         for r in rows:
             share = "n/a" if r['coupling_share'] != r['coupling_share'] else f"{100*r['coupling_share']:.1f} %"
-            binned = "n/a" if r['vzb_rms'] != r['vzb_rms'] else f"{r['vzb_rms']:.3f} (SEM {r['vzb_sem']:.3f})"
             f.write(f"| {r['run']} | {r['commit']} | {r['ranks']} | {r['wall']:.0f} | {r['core']:.0f} | {share} | "
-                    f"{cell(r['void_rms'], r['void_sem'], r['void_sym'], r['void_clean'])} | "
-                    f"{cell(r['vz_rms'], r['vz_sem'], r['vz_sym'], r['vz_clean'])} | {binned} |\n")
-        f.write("\nSEM: the mean batch-means standard error of the simulated profile; sym.: RMS of the profile "
-                "averaged with its mirror image about the mid-width; noise removed: sqrt(RMS^2 - mean SEM^2) "
-                "(compare.py).\n")
+                    f"{cell(r['void_rms'], r['void_max'], r['void_sem'], r['void_sym'], r['void_clean'])} | "
+                    f"{cell(r['vz_rms'], r['vz_max'], r['vz_sem'], r['vz_sym'], r['vz_clean'])} | "
+                    f"{bare(r['void_other'])} | {bare(r['vz_other'])} |\n")
+        f.write("\nRMS / max: over the MR data points; SEM: the mean batch-means standard error of the simulated "
+                "profile; sym.: RMS of the profile averaged with its mirror image about the mid-width; noise "
+                "removed: sqrt(RMS^2 - mean SEM^2) (compare.py). Wall time and core-seconds are those of the "
+                "runs as they ran (restarts summed; on a shared machine they are not cost figures: see the README).\n")
         if rows:
             f.write(f"\nAveraging window: {rows[0]['window']}\n")
     try:
@@ -204,6 +320,7 @@ def main():
         fig, ax = plt.subplots(2, 2, figsize=(10, 8))
         for i, (key, sem, label) in enumerate((("void_rms", "void_sem", "gas fraction RMS error, z = 16.4 mm"),
                                                ("vz_rms", "vz_sem", "particle v_z RMS error, z = 15 mm (m/s)"))):
+            label += f"\n({INSTRUMENTS[instrument][4]})"
             for r in rows:
                 current = latest[r["model"]] is r
                 for j, x in enumerate((r["core"], 100 * r["coupling_share"])):
@@ -227,9 +344,10 @@ def main():
         fig.savefig(os.path.join(out, "error_vs_runtime.png"), dpi=110)
         plt.close(fig)
         try:
-            plot_profiles(out, rows, plt)
+            plot_profiles(out, rows, plt, instrument)
+            plot_all_heights(out, rows, plt, instrument)
         except (OSError, ValueError, IndexError) as e:   # the table above is written: say what failed
-            print(f"summary.py: profiles_all_models.png not made: {e}")
+            print(f"summary.py: profile figures not made: {e}")
     except ImportError:
         print("summary.py: matplotlib missing, no PNG")
     for r in rows:
