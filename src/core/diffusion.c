@@ -132,7 +132,7 @@ static void setup_system(cdc_context *ctx, const cdc_diffusion_params *prm, impl
     for (int32_t i = 0; h && i < h->n_faces; ++i)
         ctx->halo_coeff.v[i] = face_diffusivity(prm, m->cell_volumes[h->cell[i]], h->nbr_volume[i]) * h->coeff[i];
     const int n_steps = prm->n_steps > 0 ? prm->n_steps : 4;
-    sys->tol = prm->tolerance > 0.0 ? prm->tolerance : 1e-6;
+    sys->tol = prm->tolerance > 0.0 ? prm->tolerance : CDC_DIFFUSION_DEFAULT_TOLERANCE;
     sys->max_it = prm->max_iterations > 0 ? prm->max_iterations : 1000;
     sys->dtau = prm->bandwidth * prm->bandwidth / 4.0 / n_steps;
 

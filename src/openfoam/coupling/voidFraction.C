@@ -127,12 +127,11 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
     readSmoothing(dict);
 }
 
-// The CG solves' relative residual of a diffusion smoothing (<model>Props tolerance), checked. The
-// default 1e-6 changes the Mueller demo's profiles no more than 1e-12 does, in 0.6 times the
-// iterations of 1e-10 (bench/README.md, solver tolerances).
+// The CG solves' relative residual of a diffusion smoothing (<model>Props tolerance), checked; the
+// core's default when the entry is absent.
 static scalar readDiffusionTolerance(const dictionary& dict, const dictionary& props, const word& propsName)
 {
-    const scalar tol = props.lookupOrDefault<scalar>("tolerance", 1e-6);
+    const scalar tol = props.lookupOrDefault<scalar>("tolerance", CDC_DIFFUSION_DEFAULT_TOLERANCE);
     if (!(tol > 0 && tol < 1))
     {
         FatalIOErrorInFunction(dict)
