@@ -49,22 +49,31 @@ check_runs() {
     fi
 }
 
-# check_warns NAME 'sed expression' 'expected text' ['extra shell']: a setting that has no effect; the case must run
-# to its end (exit 0) and say so in its log
-check_warns() {
-    local name="$1" edit="$2" expect="$3" extra="${4:-}" c="$work/$1"
+# check_says NAME 'what' 'sed expression' 'expected text' ['extra shell']: the case must run to its end
+# (exit 0) and its log say the expected text; 'what' names the kind of setting in the PASS/FAIL line
+check_says() {
+    local name="$1" what="$2" edit="$3" expect="$4" extra="${5:-}" c="$work/$1"
     cp -r "$base" "$c"
     sed -i "$edit" "$c/constant/couplingProperties"
     [ -n "$extra" ] && (cd "$c" && eval "$extra")
     (cd "$c" && timeout 120 coarseDemFoam > log 2>&1)
     local rc=$?
     if [ $rc -eq 0 ] && grep -q "^End" "$c/log" && grep -qF -- "$expect" "$c/log"; then
-        echo "PASS: ineffective setting '$name' runs and warns: $expect"; pass=$((pass+1))
+        echo "PASS: $what '$name' runs and says: $expect"; pass=$((pass+1))
     else
-        echo "FAIL: ineffective setting '$name' (exit $rc) did not run and warn: $expect"; tail -4 "$c/log" | sed 's/^/    /'
+        echo "FAIL: $what '$name' (exit $rc) did not run and say: $expect"; tail -4 "$c/log" | sed 's/^/    /'
         fail=$((fail+1))
     fi
 }
+# check_warns NAME 'sed expression' 'expected text' ['extra shell']: a setting that has no effect
+check_warns() { check_says "$1" "ineffective setting" "$2" "$3" "${4:-}"; }
+
+# background fields with the void-fraction method's own kernel: built once, and said so; another
+# expansion factor: a kernel of its own
+check_says background_same_kernel "background fields" 's/^backgroundFields .*/backgroundFields on; backgroundFieldsProps { expansionFactor 5; wallMirror true; }/' \
+    "background fields bigParticle kernel (the void-fraction kernels: the same, built once)"
+check_says background_own_kernel "background fields" 's/^backgroundFields .*/backgroundFields on; backgroundFieldsProps { expansionFactor 3; wallMirror true; }/' \
+    "background fields bigParticle kernel, "
 
 check unknown_model 's/^voidFractionModel .*/voidFractionModel centroid;/' \
     "unknown void fraction method 'centroid'; valid methods are: centre, divided, bigParticle, twoGrid, gaussian, exact"
