@@ -7,7 +7,7 @@ liquidFluidizedBed from the runs of Allrun -all.
                                              each drag law (Allrun -dragLaws, and the matrix's Di Felice
                                              runs) against that law's own equilibrium voidage
 
-Rows in the order method (centre divided bigParticle diffusion), modelType (A B), U (0.015 0.020
+Rows in the order method (centre divided bigParticle diffusion diffusionSources), modelType (A B), U (0.015 0.020
 0.025); a missing run is reported and left out. Prints the checks against the targets (voidage
 within 0.02 of the drag-law equilibrium, pressure drop within 2 % of the bed's weight, Model A and
 B bed heights H_c within 2 %) as MET / MISSED lines (not PASS/FAIL: the matrix is not a test).
@@ -17,7 +17,7 @@ import csv, os, shutil, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import references as ref
 
-METHODS = ("centre", "divided", "bigParticle", "diffusion")
+METHODS = ("centre", "divided", "bigParticle", "diffusion", "diffusionSources")
 MODELS = ("A", "B")
 US = ("0.015", "0.020", "0.025")
 
@@ -157,7 +157,7 @@ def main():
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
     ax.plot(uu, [ref.eps_drag_equilibrium(u) for u in uu], "k-", label="Di Felice drag equilibrium")
     ax.plot(uu, [ref.eps_richardson_zaki(u) for u in uu], "k--", label="Richardson-Zaki (Garside-Al-Dibouni n)")
-    marks = {"centre": "o", "divided": "s", "bigParticle": "^", "diffusion": "D"}
+    marks = {"centre": "o", "divided": "s", "bigParticle": "^", "diffusion": "D", "diffusionSources": "v"}
     for i, m in enumerate(METHODS):
         for mt, off, fill in (("A", -0.00045, "full"), ("B", 0.00045, "none")):
             pts = [(float(r["U"]) + off + 0.0002 * (i - 1.5), float(r["eps_sim"]), float(r["eps_sem"]))
