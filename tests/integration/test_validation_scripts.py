@@ -70,11 +70,38 @@ with tempfile.TemporaryDirectory() as tmp:
             if i % 10 == 0:
                 k = 10.0 * i / 10 + (500.0 if i >= 20 else 0.0)
                 f.write("Stage timers (s, share): kernel %g (1%%) DEM %g (1%%) fluid 0 (0%%)\n" % (k, 9.0 * i))
+        f.write("ExecutionTime = 540 s  ClockTime = 545 s\n")   # counts the 15 s of start-up too
     seg = summary.log_segments(log)[0]
     share = seg["stages"]["kernel"] / (seg["stages"]["kernel"] + seg["stages"]["DEM"])
-    check(abs(seg["clock"] - seg["paused"] - 30.0) < 1e-9 and len(seg["pauses"]) == 1 and abs(share - 0.1) < 1e-12,
-          "a paused run: wall %g s less %g s paused (expected 30 s of steps), kernel share %.4f without the "
-          "paused interval (expected 0.1; with it 0.63)" % (seg["clock"], seg["paused"], share))
+    check(abs(seg["clock"] - seg["paused"] - 45.0) < 1e-9 and len(seg["pauses"]) == 1 and abs(share - 0.1) < 1e-12,
+          "a paused run: wall %g s less %g s paused (expected 30 s of steps + 15 s of start-up: the closing "
+          "ClockTime is no pause), kernel share %.4f without the paused interval (expected 0.1; with it 0.63)"
+          % (seg["clock"], seg["paused"], share))
+
+    # the same run continued from its write at 0.1 s: the first start's stage lines after 0.1 s
+    # (holding the pause) are the continuation's stretch, not the first start's
+    with open(log, "a") as f:
+        f.write("nProcs : 2\nCreate time\n")
+        for i in range(11, 31):
+            f.write("Time = %g\n\nProgress: t = %g s of 0.3 s, %d steps, wall %g s, estimated left 1 s\n" % (i / 100, i / 100, i, i - 10.0))
+            if i % 10 == 0:
+                f.write("Stage timers (s, share): kernel %g (1%%) DEM %g (1%%) fluid 0 (0%%)\n" % (i - 10.0, 9.0 * (i - 10)))
+    segs = summary.log_segments(log)
+    st = summary.stage_times(segs)
+    check(segs[0]["paused"] == 0 and abs(segs[0]["clock"] - 10.0) < 1e-9 and abs(st["kernel"] - 30.0) < 1e-9,
+          "a continued run: the first start counted to 0.1 s (wall %g s, expected 10; paused %g s, expected 0), "
+          "kernel %g s over both starts (expected 10 + 20)" % (segs[0]["clock"], segs[0]["paused"], st["kernel"]))
+
+    # DPMFoam: ClockTime in whole seconds, most steps 0 s; one 1000 s pause
+    log = os.path.join(tmp, "logdpm")
+    with open(log, "w") as f:
+        f.write("nProcs : 1\nCreate time\n")
+        for i in range(1, 101):
+            f.write("Time = %g\n\nExecutionTime = 1 s  ClockTime = %d s\n" % (i / 100, i // 4 + (1000 if i > 50 else 0)))
+    seg = summary.log_segments(log)[0]
+    check(len(seg["pauses"]) == 1 and abs(seg["clock"] - seg["paused"] - 25) < 1,
+          "DPMFoam, whole-second clock: %d pause(s) (expected 1 at t = 0.51), wall less pauses %g s (expected 25 +- 1)"
+          % (len(seg["pauses"]), seg["clock"] - seg["paused"]))
 
     # the profiles figure: two cases at 0.9 m/s (one without the 15 mm profile, one without SEMs),
     # one at 0.6 m/s; the data of both speeds: 3 + 2 panels, each case where it has a profile

@@ -160,7 +160,7 @@ def main():
     marks = {"centre": "o", "divided": "s", "bigParticle": "^", "diffusion": "D", "diffusionSources": "v"}
     for i, m in enumerate(METHODS):
         for mt, off, fill in (("A", -0.00045, "full"), ("B", 0.00045, "none")):
-            pts = [(float(r["U"]) + off + 0.0002 * (i - 1.5), float(r["eps_sim"]), float(r["eps_sem"]))
+            pts = [(float(r["U"]) + off + 0.0002 * (i - 2), float(r["eps_sim"]), float(r["eps_sem"]))
                    for r in rows if r["method"] == m and r["modelType"] == mt]
             if pts:
                 ax.errorbar([p[0] for p in pts], [p[1] for p in pts], yerr=[p[2] for p in pts],

@@ -154,28 +154,43 @@ def log_segments(log):
         else:
             m = re.match(r"Progress: t = ([0-9.eE+-]+) s .* wall ([0-9.eE+-]+) s", line)
             if m:
-                segs[-1]["walls"].append((float(m.group(1)), float(m.group(2))))
+                segs[-1]["walls"].append((float(m.group(1)), float(m.group(2)), "progress"))
                 continue
             m = re.search(r"ClockTime = ([0-9.eE+-]+)", line)
             if m:
-                segs[-1]["walls"].append((t if t is not None else float("inf"), float(m.group(1))))
+                segs[-1]["walls"].append((t if t is not None else float("inf"), float(m.group(1)), "clock"))
     # each segment counts up to the earliest time any later segment started from (a start that
     # failed before its first step has no wall entries and cuts nothing)
     restart = float("inf")
     for seg in reversed(segs):
         walls = seg["walls"] if restart == float("inf") else [w for w in seg["walls"] if w[0] < restart]
         seg["clock"] = max((w[1] for w in walls), default=0.0)
-        steps = sorted(b[1] - a[1] for a, b in zip(walls, walls[1:]))
-        median = steps[len(steps) // 2] if steps else 0.0
-        seg["pauses"] = [(b[0], b[1] - a[1] - median) for a, b in zip(walls, walls[1:])
-                         if median > 0 and b[1] - a[1] >= PAUSE_FACTOR * median]
+        seg["pauses"] = find_pauses(walls)
         seg["paused"] = sum(p for _, p in seg["pauses"])
-        seg["stages"] = clean_stages(seg["stage_lines"], [t for t, _ in seg["pauses"]])
+        lines = [l for l in seg["stage_lines"] if l[0] is None or l[0] <= restart]
+        seg["stages"] = clean_stages(lines, [t for t, _ in seg["pauses"]])
         if seg["walls"]:
             restart = min(restart, seg["walls"][0][0])
     return segs
 
-PAUSE_FACTOR = 100   # a step this many times the median step: the run was stopped, not slow
+PAUSE_FACTOR = 100   # a step this many times the typical step: the run was stopped, not slow
+
+
+def find_pauses(walls):
+    """(time, seconds) of each pause among a segment's wall samples (time, wall, kind). Steps of one
+    kind only: coarseDemFoam's "Progress" walls (its closing ClockTime counts from an earlier
+    start, and its last "step" would hold the start-up), else DPMFoam's ClockTime (whole seconds:
+    the typical step is the median, or where most steps round to 0 s the mean of the steps
+    without their largest tenth, which would hold the pauses)."""
+    kind = "progress" if any(w[2] == "progress" for w in walls) else "clock"
+    ws = [w for w in walls if w[2] == kind]
+    steps = sorted(b[1] - a[1] for a, b in zip(ws, ws[1:]))
+    if not steps:
+        return []
+    kept = steps[:max(1, len(steps) - len(steps) // 10)]
+    typical = steps[len(steps) // 2] or sum(kept) / len(kept)
+    return [(b[0], b[1] - a[1] - typical) for a, b in zip(ws, ws[1:])
+            if typical > 0 and b[1] - a[1] >= PAUSE_FACTOR * typical]
 
 
 def clean_stages(lines, pause_times):
@@ -207,10 +222,11 @@ def stage_times(segs):
 def main():
     args = sys.argv[1:]
     instrument = "depthBinned"
-    if args[:1] == ["-instrument"]:
-        if len(args) < 2 or args[1] not in INSTRUMENTS:
+    if "-instrument" in args:   # anywhere on the line
+        i = args.index("-instrument")
+        if i + 1 >= len(args) or args[i + 1] not in INSTRUMENTS:
             sys.exit(f"summary.py: -instrument takes one of {', '.join(INSTRUMENTS)}")
-        instrument, args = args[1], args[2:]
+        instrument, args = args[i + 1], args[:i] + args[i + 2:]
     if len(args) < 2:
         sys.exit(__doc__)
     out, runs = args[0], args[1:]
