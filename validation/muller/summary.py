@@ -23,20 +23,46 @@ directory next to this script), each case's last run (model, dx/d, U and mode) a
 <out>/profiles_all_heights.png: each case's last run at every sampled height (15 ... 35 mm), gas
 fraction and particle v_z of the headline instrument, with the MR data where they exist.
 """
-import csv, glob, os, re, shutil, sys
+import collections, csv, glob, os, re, shutil, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from compare import read_profile
 
 DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
 
-# instrument: (errors.csv quantity of the gas fraction, of the particle v_z; profile file stems; words)
+# an instrument: the errors.csv quantities of the gas fraction and the particle v_z, the profile
+# file stems of the MR data's quantities (voidfraction, vz), and its words in tables and figures
+Instrument = collections.namedtuple("Instrument", "void_error vz_error stems words")
 INSTRUMENTS = {
-    "depthBinned": ("void_fraction_depth_binned", "vz_particle_depth_binned_m_per_s",
-                    "voidfractiondepthbinned", "vzdepthbinned", "depth-averaged, binned"),
-    "midThickness": ("void_fraction", "vz_particle_m_per_s", "voidfraction", "vz", "mid-thickness"),
+    "depthBinned": Instrument("void_fraction_depth_binned", "vz_particle_depth_binned_m_per_s",
+                              {"voidfraction": "voidfractiondepthbinned", "vz": "vzdepthbinned"},
+                              "depth-averaged, binned"),
+    "midThickness": Instrument("void_fraction", "vz_particle_m_per_s",
+                               {"voidfraction": "voidfraction", "vz": "vz"}, "mid-thickness"),
 }
 HEIGHTS_MM = ("15", "16.4", "20", "25", "31.2", "35")
+
+
+def inlet_of(name):
+    """The inlet velocity (m/s, as written) in a run's name (..._U0.9_...), or None."""
+    m = re.search(r"_U([0-9.]+)_", name)
+    return m.group(1) if m else None
+
+
+def draw_profile(ax, path, label, **style):
+    """A run's time-averaged profile (x in mm) with +-2 batch SEM as a band where the SEMs exist;
+    False when the file is missing or empty."""
+    if not os.path.exists(path):
+        return False
+    _, sx, sy, se = read_profile(path)
+    if not sx:
+        return False
+    xs = [x * 1e3 for x in sx]
+    line, = ax.plot(xs, sy, "-", label=label, **style)
+    if all(e == e for e in se):
+        ax.fill_between(xs, [y - 2 * e for y, e in zip(sy, se)], [y + 2 * e for y, e in zip(sy, se)],
+                        color=line.get_color(), alpha=0.12, lw=0)
+    return True
 
 
 def plot_profiles(out, rows, plt, instrument, data_dir=DATA_DIR):
@@ -45,8 +71,8 @@ def plot_profiles(out, rows, plt, instrument, data_dir=DATA_DIR):
     <out>, +-2 batch SEM as a band. Returns the number of panels."""
     latest = {r["name"]: r for r in rows}
     def inlet(name):
-        m = re.search(r"_U([0-9.]+)_", name)
-        return float(m.group(1)) if m else None
+        u = inlet_of(name)
+        return float(u) if u else None
     files = []
     for path in sorted(glob.glob(os.path.join(data_dir, "mueller_U*_*_z*mm_MR.csv"))):
         m = re.match(r"mueller_U([0-9.]+)_(\w+?)_z([0-9.]+)mm_MR\.csv", os.path.basename(path))
@@ -57,17 +83,11 @@ def plot_profiles(out, rows, plt, instrument, data_dir=DATA_DIR):
     fig, axes = plt.subplots(1, len(files), figsize=(5.5 * len(files), 4.2), squeeze=False)
     for ax, (path, U, q, h) in zip(axes[0], files):
         for name, r in latest.items():
-            sim = os.path.join(out, r["run"], f"profile_{stem_of(instrument, q)}_z{h}mm.csv")
-            if inlet(name) != U or not os.path.exists(sim):
+            if inlet(name) != U:
                 continue
-            _, sx, sy, se = read_profile(sim)
-            if not sx:
-                continue
-            label = name.replace(f"_U{name.split('_U')[1].split('_')[0]}", "")
-            line, = ax.plot([x * 1e3 for x in sx], sy, "-", label=f"{label} ({r['commit']})")
-            if all(e == e for e in se):
-                ax.fill_between([x * 1e3 for x in sx], [y - 2 * e for y, e in zip(sy, se)],
-                                [y + 2 * e for y, e in zip(sy, se)], color=line.get_color(), alpha=0.12, lw=0)
+            label = name.replace(f"_U{inlet_of(name)}", "")
+            draw_profile(ax, os.path.join(out, r["run"], f"profile_{INSTRUMENTS[instrument].stems[q]}_z{h}mm.csv"),
+                         f"{label} ({r['commit']})")
         _, dx, dy, _ = read_profile(path)
         ax.plot([x * 1e3 for x in dx], dy, "ko", ms=4, label="Müller et al. (MR)")
         ax.set_xlabel("distance from the left wall (mm)")
@@ -75,15 +95,11 @@ def plot_profiles(out, rows, plt, instrument, data_dir=DATA_DIR):
                        "vz": "time-averaged particle v_z (m/s)"}.get(q, q))
         ax.set_title(f"U = {U:g} m/s, z = {h} mm")
         ax.legend(fontsize=7)
-    fig.suptitle(f"Mueller bed: each case's last run against the MR data ({INSTRUMENTS[instrument][4]}; bands: +-2 batch SEM)")
+    fig.suptitle(f"Mueller bed: each case's last run against the MR data ({INSTRUMENTS[instrument].words}; bands: +-2 batch SEM)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "profiles_all_models.png"), dpi=110)
     plt.close(fig)
     return len(files)
-
-def stem_of(instrument, q):
-    """The profile file stem of the instrument for the MR data's quantity q (voidfraction, vz)."""
-    return INSTRUMENTS[instrument][2 if q == "voidfraction" else 3]
 
 
 def plot_all_heights(out, rows, plt, instrument, data_dir=DATA_DIR):
@@ -95,18 +111,9 @@ def plot_all_heights(out, rows, plt, instrument, data_dir=DATA_DIR):
         for ax, h in zip(axes[i], HEIGHTS_MM):
             inlets = set()
             for name, r in latest.items():
-                sim = os.path.join(out, r["run"], f"profile_{stem_of(instrument, q)}_z{h}mm.csv")
-                if not os.path.exists(sim):
-                    continue
-                _, sx, sy, se = read_profile(sim)
-                if not sx:
-                    continue
-                m = re.search(r"_U([0-9.]+)_", name)
-                inlets.add(m.group(1) if m else None)
-                line, = ax.plot([x * 1e3 for x in sx], sy, "-", lw=1, label=r["model"])
-                if all(e == e for e in se):
-                    ax.fill_between([x * 1e3 for x in sx], [y - 2 * e for y, e in zip(sy, se)],
-                                    [y + 2 * e for y, e in zip(sy, se)], color=line.get_color(), alpha=0.12, lw=0)
+                sim = os.path.join(out, r["run"], f"profile_{INSTRUMENTS[instrument].stems[q]}_z{h}mm.csv")
+                if draw_profile(ax, sim, r["model"], lw=1):
+                    inlets.add(inlet_of(name))
             for U in sorted(u for u in inlets if u):
                 data = os.path.join(data_dir, f"mueller_U{U}_{q}_z{h}mm_MR.csv")
                 if os.path.exists(data):
@@ -116,7 +123,7 @@ def plot_all_heights(out, rows, plt, instrument, data_dir=DATA_DIR):
             ax.set_xlabel("x (mm)", fontsize=8)
         axes[i][0].set_ylabel("gas fraction" if q == "voidfraction" else "particle v_z (m/s)")
     axes[0][0].legend(fontsize=6)
-    fig.suptitle(f"Mueller bed, every sampled height ({INSTRUMENTS[instrument][4]}; bands: +-2 batch SEM)")
+    fig.suptitle(f"Mueller bed, every sampled height ({INSTRUMENTS[instrument].words}; bands: +-2 batch SEM)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "profiles_all_heights.png"), dpi=100)
     plt.close(fig)
@@ -230,7 +237,7 @@ def main():
     if len(args) < 2:
         sys.exit(__doc__)
     out, runs = args[0], args[1:]
-    q_void, q_vz = INSTRUMENTS[instrument][:2]
+    head = INSTRUMENTS[instrument]
     other = INSTRUMENTS["midThickness" if instrument == "depthBinned" else "depthBinned"]
     os.makedirs(out, exist_ok=True)
     rows = []
@@ -273,13 +280,13 @@ def main():
         info = open(os.path.join(run, "results", "profiles_info.txt")).readline().split(";")[0].strip()
         label = f"{name}_{commit.replace(' ', '+')}"
         nan5 = (float("nan"),) * 5
-        void = errs.get((q_void, "16.4"), nan5)
-        vz = errs.get((q_vz, "15"), nan5)
+        void = errs.get((head.void_error, "16.4"), nan5)
+        vz = errs.get((head.vz_error, "15"), nan5)
         if void[0] != void[0] or vz[0] != vz[0]:
             print(f"summary.py: {name}: no {instrument} errors in {path}: n/a in the headline columns"
                   + (" (try -instrument midThickness)" if instrument == "depthBinned" else ""))
-        void_other = errs.get((other[0], "16.4"), nan5)
-        vz_other = errs.get((other[1], "15"), nan5)
+        void_other = errs.get((other.void_error, "16.4"), nan5)
+        vz_other = errs.get((other.vz_error, "15"), nan5)
         rows.append(dict(run=label, name=name, model=name.split("_")[0], wall=wall, core=core, ranks=ranks, commit=commit, coupling_share=coupling / total,
                          fluid_share=st.get("fluid", 0) / total, dem_share=st.get("DEM", 0) / total,
                          void_rms=void[0], void_max=void[1], void_sem=void[2], void_sym=void[3], void_clean=void[4],
@@ -303,9 +310,8 @@ def main():
                     f"{r['vz_rms']:.4f},{r['vz_max']:.4f},{r['vz_sem']:.4f},{r['vz_sym']:.4f},{r['vz_clean']:.4f},"
                     f"{r['void_other']:.4f},{r['vz_other']:.4f}\n")
     with open(os.path.join(out, "error_vs_runtime.md"), "w") as f:
-        head, tail = INSTRUMENTS[instrument][4], other[4]
-        f.write(f"| run | commit | ranks | wall time (s) | core-seconds | coupling share | gas fraction, z = 16.4 mm, {head}: RMS / max | "
-                f"particle v_z, z = 15 mm, {head}: RMS / max (m/s) | gas fraction RMS, {tail} | particle v_z RMS, {tail} (m/s) |\n"
+        f.write(f"| run | commit | ranks | wall time (s) | core-seconds | coupling share | gas fraction, z = 16.4 mm, {head.words}: RMS / max | "
+                f"particle v_z, z = 15 mm, {head.words}: RMS / max (m/s) | gas fraction RMS, {other.words} | particle v_z RMS, {other.words} (m/s) |\n"
                 "|---|---|---|---|---|---|---|---|---|---|\n")
         def cell(rms, mx, sem, sym, clean):
             if rms != rms:
@@ -322,8 +328,9 @@ def main():
                     f"{bare(r['void_other'])} | {bare(r['vz_other'])} |\n")
         f.write("\nRMS / max: over the MR data points; SEM: the mean batch-means standard error of the simulated "
                 "profile; sym.: RMS of the profile averaged with its mirror image about the mid-width; noise "
-                "removed: sqrt(RMS^2 - mean SEM^2) (compare.py). Wall time and core-seconds are those of the "
-                "runs as they ran (restarts summed; on a shared machine they are not cost figures: see the README).\n")
+                "removed: sqrt(RMS^2 - mean SEM^2) (compare.py). Wall time and core-seconds: every start summed, "
+                "the pauses found taken off (a stopped run: summary.py names them); on a shared machine not "
+                "cost figures (see the README).\n")
         if rows:
             f.write(f"\nAveraging window: {rows[0]['window']}\n")
     try:
@@ -336,7 +343,7 @@ def main():
         fig, ax = plt.subplots(2, 2, figsize=(10, 8))
         for i, (key, sem, label) in enumerate((("void_rms", "void_sem", "gas fraction RMS error, z = 16.4 mm"),
                                                ("vz_rms", "vz_sem", "particle v_z RMS error, z = 15 mm (m/s)"))):
-            label += f"\n({INSTRUMENTS[instrument][4]})"
+            label += f"\n({head.words})"
             for r in rows:
                 current = latest[r["model"]] is r
                 for j, x in enumerate((r["core"], 100 * r["coupling_share"])):
