@@ -98,10 +98,13 @@ void coarseDemCoupling::createBackgroundKernels()
         // bigParticle with the background's own parameters (the paper's comparison run for
         // bigParticle n = 5): its kernels are the background kernels. Building them twice doubled
         // the kernel stage, and the explicit correction between the two (K (u_f - u_f)) is zero.
+        // Every member is compared, not only those bigParticle reads today.
         const cdc_kernel_params& vf = voidFraction_.params();
         if
         (
-            voidFraction_.method() == "bigParticle" && vf.expansion_factor == prm.expansion_factor
+            voidFraction_.method() == "bigParticle"
+         && vf.expansion_factor == prm.expansion_factor && vf.search_factor == prm.search_factor
+         && vf.bandwidth == prm.bandwidth && vf.cutoff_factor == prm.cutoff_factor
          && vf.wall_mirror == prm.wall_mirror
         )
         {
