@@ -3,7 +3,8 @@
 profiles.drop_superseded (samples of a stopped segment re-sampled by its continuation) and
 summary.log_segments (wall seconds per start, cut where the continuation started, MPI ranks; a
 run's pauses taken off its wall time and its stage shares), summary.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs), and
-window.py on a synthetic run (errors per averaging window against ones computed here, its refusals).
+window.py on a synthetic run (errors per averaging window against ones computed here, its refusals),
+and etc/runArchive (a stopped run packed and unpacked to continue elsewhere).
 Prints PASS/FAIL per check and "N passed, N failed"."""
 import csv, importlib.util, math, os, random, subprocess, sys, tempfile, time
 
@@ -236,6 +237,50 @@ with tempfile.TemporaryDirectory() as tmp:
         msg = r.stderr.strip()
         check(r.returncode == 2 and word in msg and "\n" not in msg,
               "window.py refuses %s: exit %d, %r" % (what, r.returncode, msg))
+
+# etc/runArchive: a stopped 2-rank run packed keeps the case, the samples and the last time complete
+# on both ranks (a time being written on one rank, or without its DEM restart, is not complete), and
+# unpacks into a run folder that Allrun -continue reads; it refuses to unpack over an existing run
+with tempfile.TemporaryDirectory() as tmp:
+    run = os.path.join(tmp, "runs", "m_dx1_U0.9_medium")
+    def touch(rel, text=""):
+        f = os.path.join(run, rel)
+        os.makedirs(os.path.dirname(f), exist_ok=True)
+        open(f, "w").write(text)
+    for rel in ("system/controlDict", "constant/couplingProperties", "DEM/in.liggghts", "log.coarseDemFoam",
+                "wall_seconds.txt", "commit.txt", "postProcessing/profiles/0.01/z15_alpha.csv",
+                "0/U", "2.5/U", "processor0/constant/polyMesh/points", "processor1/constant/polyMesh/points"):
+        touch(rel, rel)
+    for rank in (0, 1):
+        touch("processor%d/0/U" % rank)
+        for t in ("2.25", "2.5"):
+            touch("processor%d/%s/U" % (rank, t), t)
+            touch("processor%d/%s/uniform/time" % (rank, t))
+            touch("processor%d/%s/dem.restart.%d" % (rank, t, rank))
+    touch("processor0/2.75/uniform/time")   # being written: on one rank only, no DEM restart yet
+    touch("processor0/2.75/dem.restart.0")
+    archive = os.path.join(tmp, "m.tar.xz")
+    tool = os.path.join(top, "etc", "runArchive")
+    r = subprocess.run([tool, "pack", run, archive], capture_output=True, text=True)
+    names = subprocess.run(["tar", "tJf", archive], capture_output=True, text=True).stdout.split() if r.returncode == 0 else []
+    times = sorted(set(n.split("/")[2] for n in names if n.split("/")[1].startswith("processor") and len(n.split("/")) > 3
+                       and n.split("/")[2][0].isdigit()))
+    check(r.returncode == 0 and "t = 2.5 (2 ranks)" in r.stdout and times == ["0", "2.5"] and
+          "m_dx1_U0.9_medium/2.5/U" not in names and
+          all("m_dx1_U0.9_medium/" + rel in names for rel in ("system/controlDict", "DEM/in.liggghts",
+              "postProcessing/profiles/0.01/z15_alpha.csv", "wall_seconds.txt", "commit.txt",
+              "processor1/2.5/dem.restart.1", "processor0/constant/polyMesh/points")),
+          "runArchive pack: case, samples and the last time complete on both ranks (2.5, not 2.75 nor 2.25): %r, times %s"
+          % (r.stdout.strip() or r.stderr.strip(), times))
+    dest = os.path.join(tmp, "elsewhere")
+    r = subprocess.run([tool, "unpack", archive, dest], capture_output=True, text=True)
+    restored = os.path.join(dest, "m_dx1_U0.9_medium")
+    check(r.returncode == 0 and open(os.path.join(restored, "processor1", "2.5", "U")).read() == "2.5" and
+          open(os.path.join(restored, "wall_seconds.txt")).read() == "wall_seconds.txt",
+          "runArchive unpack: the run folder as packed (%r)" % (r.stdout.strip() or r.stderr.strip()))
+    r = subprocess.run([tool, "unpack", archive, dest], capture_output=True, text=True)
+    check(r.returncode != 0 and "exists" in r.stderr and restored in r.stderr,
+          "runArchive refuses to unpack over an existing run: %r" % r.stderr.strip())
 
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)
