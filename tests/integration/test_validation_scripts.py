@@ -238,6 +238,43 @@ with tempfile.TemporaryDirectory() as tmp:
         check(r.returncode == 2 and word in msg and "\n" not in msg,
               "window.py refuses %s: exit %d, %r" % (what, r.returncode, msg))
 
+    # -add: the rows of a run measured before (its directory gone) kept beside the run given again
+    before = open(os.path.join(out, "window.csv")).read().splitlines()
+    gone = [l.replace("synth_dx1_U0.9_test", "gone_dx1_U0.9_test", 1) for l in before[1:]]
+    open(os.path.join(out, "window.csv"), "w").write("\n".join(before[:1] + gone) + "\n")
+    r = window(run, "-tstart", "0.02", "-step", "0.07", "-data", data, "-o", out, "-add")
+    after = open(os.path.join(out, "window.csv")).read().splitlines()
+    check(r.returncode == 0 and after == before[:1] + gone + before[1:],
+          "window.py -add: the earlier rows of a run not given kept, the run given measured again (%d + %d rows)"
+          % (len(gone), len(after) - 1 - len(gone)))
+
+# summary.py: a run summarised before and given as its folder of the output directory (its run
+# directory and logs gone, as on a fresh machine) keeps its row: the errors from the folder's
+# errors.csv at full precision, wall time, ranks and shares from the table
+with tempfile.TemporaryDirectory() as tmp:
+    out = os.path.join(tmp, "medium")
+    label = "divided_dx1_U0.9_medium_background_abc1234"
+    os.makedirs(os.path.join(out, label))
+    with open(os.path.join(out, label, "errors.csv"), "w") as f:
+        f.write("quantity,z_mm,rms_error,max_error,mean_batch_sem,rms_error_symmetrised,rms_error_noise_removed\n"
+                "void_fraction_depth_binned,16.4,0.03594,0.06349,0.0092,0.0337,0.0346\n"
+                "vz_particle_depth_binned_m_per_s,15,0.0506,0.1017,0.0105,0.0519,0.0495\n"
+                "void_fraction,16.4,0.0411,0.07,0.01,0.04,0.04\nvz_particle_m_per_s,15,0.0514,0.09,0.01,0.05,0.05\n")
+    open(os.path.join(out, label, "profiles_info.txt"), "w").write("window (2, 7] s; 499 samples\n")
+    header = ("run,model,commit,ranks,wall_time_s,core_seconds,coupling_share,fluid_share,dem_share,instrument,"
+              "voidfraction_z16.4_rms,voidfraction_z16.4_max,voidfraction_z16.4_mean_sem,voidfraction_z16.4_rms_symmetrised,"
+              "voidfraction_z16.4_rms_noise_removed,vz_z15_rms_m_per_s,vz_z15_max_m_per_s,vz_z15_mean_sem,vz_z15_rms_symmetrised,"
+              "vz_z15_rms_noise_removed,voidfraction_z16.4_other_rms,vz_z15_other_rms_m_per_s\n")
+    row = label + ",divided,abc1234,2,6712,13425,0.196,0.446,0.358,depthBinned,0.0359,0.0635,0.0092,0.0337,0.0346,0.0506,0.1017,0.0105,0.0519,0.0495,0.0411,0.0514\n"
+    open(os.path.join(out, "error_vs_runtime.csv"), "w").write(header + row)
+    r = subprocess.run([sys.executable, os.path.join(top, "validation", "muller", "summary.py"), out, os.path.join(out, label)],
+                       capture_output=True, text=True)
+    table = open(os.path.join(out, "error_vs_runtime.md")).read() if r.returncode == 0 else ""
+    check(r.returncode == 0 and open(os.path.join(out, "error_vs_runtime.csv")).read() == header + row and
+          "| 6712 | 13425 | 19.6 % | 0.036 / 0.063 (SEM 0.009" in table and "(2, 7] s" in table,
+          "summary.py keeps the row of a run given as its output folder, the max error from its errors.csv "
+          "(0.063, not the table's rounded 0.0635): rc %d %s" % (r.returncode, r.stderr.strip()[-200:]))
+
 # etc/runArchive: a stopped 2-rank run packed keeps the case, the samples and the last time complete
 # on both ranks (a time being written on one rank, or without its DEM restart, is not complete), and
 # unpacks into a run folder that Allrun -continue reads; it refuses to unpack over an existing run

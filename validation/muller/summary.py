@@ -11,6 +11,8 @@ summed; runs before the stages were renamed have other names, the same rule hold
 profile CSVs and comparison plots to <out>/<run>_<commit>/ (runs of one model at different commits
 side by side) and writes <out>/error_vs_runtime.{csv,md,png}; the PNG labels each model's last run
 on the command line (give the runs oldest first) and shows its earlier runs as grey circles.
+A run given as one of <out>'s own folders (<out>/<run>_<commit>, made by an earlier summary, whose
+run directory and logs may be gone) keeps its row of <out>/error_vs_runtime.csv.
 
 The instrument of the headline columns and figures (RMS and maximum error, batch SEM, symmetrised
 and noise-removed RMS): `depthBinned` (default; the gas fraction and particle v_z averaged over the
@@ -40,6 +42,9 @@ INSTRUMENTS = {
     "midThickness": Instrument("void_fraction", "vz_particle_m_per_s",
                                {"voidfraction": "voidfraction", "vz": "vz"}, "mid-thickness"),
 }
+# per headline instrument: (the headline's, the other's) for the error columns
+ERROR_INSTRUMENTS = {k: (INSTRUMENTS[k], INSTRUMENTS["midThickness" if k == "depthBinned" else "depthBinned"])
+                     for k in INSTRUMENTS}
 HEIGHTS_MM = ("15", "16.4", "20", "25", "31.2", "35")
 
 
@@ -226,6 +231,53 @@ def stage_times(segs):
             total[k] = total.get(k, 0.0) + v
     return total or None
 
+# error_vs_runtime.csv's columns after "instrument", in order, and the row keys they hold
+CSV_ERRORS = ("void_rms", "void_max", "void_sem", "void_sym", "void_clean",
+              "vz_rms", "vz_max", "vz_sem", "vz_sym", "vz_clean", "void_other", "vz_other")
+
+
+def error_fields(path, head, other):
+    """A run's errors from its errors.csv (compare.py) as the row keys of CSV_ERRORS: the headline
+    instrument's RMS, max, SEM, symmetrised and noise-removed RMS of the gas fraction at 16.4 mm and
+    the particle v_z at 15 mm, and the other instrument's RMS (nan where missing; older files lack
+    the symmetrised and noise-removed RMS)."""
+    errs = {}
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            errs[(r["quantity"], r["z_mm"])] = tuple(float(r.get(k) or "nan") for k in (
+                "rms_error", "max_error", "mean_batch_sem", "rms_error_symmetrised", "rms_error_noise_removed"))
+    nan5 = (float("nan"),) * 5
+    void, vz = errs.get((head.void_error, "16.4"), nan5), errs.get((head.vz_error, "15"), nan5)
+    fields = dict(zip(CSV_ERRORS[:5], void), **dict(zip(CSV_ERRORS[5:10], vz)))
+    fields["void_other"] = errs.get((other.void_error, "16.4"), nan5)[0]
+    fields["vz_other"] = errs.get((other.vz_error, "15"), nan5)[0]
+    return fields
+
+
+def kept_rows(out, instrument):
+    """The rows of <out>/error_vs_runtime.csv written with this instrument, by run folder name (with
+    the fields a row made from a run directory has), so that a run summarised before can be given
+    as its folder in <out> once its run directory is gone."""
+    path = os.path.join(out, "error_vs_runtime.csv")
+    if not os.path.exists(path):
+        return {}
+    rows = {}
+    with open(path) as f:
+        for r in csv.reader(f):
+            if r[0] == "run" or len(r) != 10 + len(CSV_ERRORS) or r[9] != instrument:
+                continue
+            row = dict(run=r[0], name=re.sub(r"_[^_]+$", "", r[0]), model=r[1], commit=r[2], ranks=r[3],
+                       wall=float(r[4]), core=float(r[5]), coupling_share=float(r[6]),
+                       fluid_share=float(r[7]), dem_share=float(r[8]))
+            errors = os.path.join(out, r[0], "errors.csv")
+            row.update(error_fields(errors, *ERROR_INSTRUMENTS[instrument]) if os.path.exists(errors)
+                       else {k: float(v) for k, v in zip(CSV_ERRORS, r[10:])})
+            info = os.path.join(out, r[0], "profiles_info.txt")
+            row["window"] = open(info).readline().split(";")[0].strip() if os.path.exists(info) else ""
+            rows[r[0]] = row
+    return rows
+
+
 def main():
     args = sys.argv[1:]
     instrument = "depthBinned"
@@ -237,22 +289,22 @@ def main():
     if len(args) < 2:
         sys.exit(__doc__)
     out, runs = args[0], args[1:]
-    head = INSTRUMENTS[instrument]
-    other = INSTRUMENTS["midThickness" if instrument == "depthBinned" else "depthBinned"]
+    head, other = ERROR_INSTRUMENTS[instrument]
     os.makedirs(out, exist_ok=True)
+    kept = kept_rows(out, instrument)
     rows = []
     for run in runs:
         name = os.path.basename(os.path.normpath(run))
-        errs = {}
+        if os.path.samefile(os.path.dirname(os.path.abspath(os.path.normpath(run))), out) and name in kept:
+            # one of <out>'s own folders: a run summarised before, whose run directory (its logs) may
+            # be gone; its row as the last summary wrote it
+            rows.append(kept[name])
+            continue
         path = os.path.join(run, "results", "comparison", "errors.csv")
         if not os.path.exists(path):
             print(f"summary.py: {name}: no comparison yet, skipped")
             continue
-        with open(path) as f:
-            for r in csv.DictReader(f):
-                # (RMS, max, SEM, symmetrised RMS, noise-removed RMS); older files lack the last two
-                errs[(r["quantity"], r["z_mm"])] = tuple(float(r.get(k) or "nan") for k in (
-                    "rms_error", "max_error", "mean_batch_sem", "rms_error_symmetrised", "rms_error_noise_removed"))
+        errs = error_fields(path, head, other)
         # the solver log has every start, also one cut by a kill; wall_seconds.txt (one line per
         # (re)start that returned, "<wall seconds> [<MPI ranks>]") only where there is no log
         wpath = os.path.join(run, "wall_seconds.txt")
@@ -279,19 +331,11 @@ def main():
         coupling = sum(v for k, v in st.items() if k not in NOT_COUPLING)
         info = open(os.path.join(run, "results", "profiles_info.txt")).readline().split(";")[0].strip()
         label = f"{name}_{commit.replace(' ', '+')}"
-        nan5 = (float("nan"),) * 5
-        void = errs.get((head.void_error, "16.4"), nan5)
-        vz = errs.get((head.vz_error, "15"), nan5)
-        if void[0] != void[0] or vz[0] != vz[0]:
+        if errs["void_rms"] != errs["void_rms"] or errs["vz_rms"] != errs["vz_rms"]:
             print(f"summary.py: {name}: no {instrument} errors in {path}: n/a in the headline columns"
                   + (" (try -instrument midThickness)" if instrument == "depthBinned" else ""))
-        void_other = errs.get((other.void_error, "16.4"), nan5)
-        vz_other = errs.get((other.vz_error, "15"), nan5)
         rows.append(dict(run=label, name=name, model=name.split("_")[0], wall=wall, core=core, ranks=ranks, commit=commit, coupling_share=coupling / total,
-                         fluid_share=st.get("fluid", 0) / total, dem_share=st.get("DEM", 0) / total,
-                         void_rms=void[0], void_max=void[1], void_sem=void[2], void_sym=void[3], void_clean=void[4],
-                         vz_rms=vz[0], vz_max=vz[1], vz_sem=vz[2], vz_sym=vz[3], vz_clean=vz[4],
-                         void_other=void_other[0], vz_other=vz_other[0], window=info))
+                         fluid_share=st.get("fluid", 0) / total, dem_share=st.get("DEM", 0) / total, window=info, **errs))
         dest = os.path.join(out, label)
         os.makedirs(dest, exist_ok=True)
         for f in glob.glob(os.path.join(run, "results", "*.csv")) + glob.glob(os.path.join(run, "results", "*.txt")):
@@ -306,9 +350,7 @@ def main():
                 "voidfraction_z16.4_other_rms,vz_z15_other_rms_m_per_s\n")
         for r in rows:
             f.write(f"{r['run']},{r['model']},{r['commit']},{r['ranks']},{r['wall']:.0f},{r['core']:.0f},{r['coupling_share']:.3f},{r['fluid_share']:.3f},{r['dem_share']:.3f},{instrument},"
-                    f"{r['void_rms']:.4f},{r['void_max']:.4f},{r['void_sem']:.4f},{r['void_sym']:.4f},{r['void_clean']:.4f},"
-                    f"{r['vz_rms']:.4f},{r['vz_max']:.4f},{r['vz_sem']:.4f},{r['vz_sym']:.4f},{r['vz_clean']:.4f},"
-                    f"{r['void_other']:.4f},{r['vz_other']:.4f}\n")
+                    + ",".join(f"{r[k]:.4f}" for k in CSV_ERRORS) + "\n")
     with open(os.path.join(out, "error_vs_runtime.md"), "w") as f:
         f.write(f"| run | commit | ranks | wall time (s) | core-seconds | coupling share | gas fraction, z = 16.4 mm, {head.words}: RMS / max | "
                 f"particle v_z, z = 15 mm, {head.words}: RMS / max (m/s) | gas fraction RMS, {other.words} | particle v_z RMS, {other.words} (m/s) |\n"

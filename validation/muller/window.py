@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """How the error against the MR data changes with the length of the averaging window.
 
-    window.py <run dir> [<run dir> ...] -tstart T [-step 0.5] [-U 0.9] [-o out dir] [-data dir]
+    window.py <run dir> [<run dir> ...] -tstart T [-step 0.5] [-U 0.9] [-o out dir] [-data dir] [-add]
 
 Whether a run's statistics have converged: for each run the profiles are averaged over the
 windows (T, T + step], (T, T + 2 step], ... up to the run's last sample, and each is compared with
@@ -20,7 +20,8 @@ samples may use fewer, e.g. 20 of 21) and <out>/window.png: the RMS error agains
 length for the headline quantities (depth-averaged, particles binned by their centre's cell), one
 panel for the gas fraction and one for the particle v_z, one line per run (its label is the run
 directory's name) with the RMS averaged over the heights that have data, and a thin line per height
-where there are several. Default out dir: ./window.
+where there are several. Default out dir: ./window. -add: keep the rows of <out>/window.csv of the
+runs not given (runs measured before, whose run directories may be gone) and draw them too.
 
 Assumptions: samples in <run>/postProcessing/depthProfiles/<time>/ (and profiles/<time>/), as
 profiles.py reads them. A window is taken while its end is at most half a sample spacing after the
@@ -31,7 +32,7 @@ in this table: compare.py on a chosen window gives them.
 Errors (exit status 2, one line): a run without samples, a tstart at or beyond a run's last sample
 or with no whole window after it, an inlet velocity without MR data.
 """
-import contextlib, glob, io, math, os, re, sys, tempfile
+import contextlib, csv, glob, io, math, os, re, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare, profiles
@@ -181,8 +182,20 @@ def plot(out, table, tstart):
     return True
 
 
+def kept_rows(path, given):
+    """The rows of an earlier window.csv of the runs not in `given` (-add), as the table's dicts."""
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [{"run": r["run"], "window_s": float(r["window_s"]), "quantity": r["quantity"], "z_mm": r["z_mm"],
+                 "rms": float(r["rms"]), "max": float(r["max"]), "n_samples": int(r["n_samples"])}
+                for r in csv.DictReader(f) if r["run"] not in given]
+
+
 def main():
     args = sys.argv[1:]
+    add = "-add" in args
+    args = [a for a in args if a != "-add"]
     opts = {"-tstart": None, "-step": "0.5", "-U": "0.9", "-o": "window", "-data": DATA_DIR}
     for key in opts:
         if key in args:
@@ -254,6 +267,8 @@ def main():
             print(f"window.py: {name}: {m}")
 
     os.makedirs(out, exist_ok=True)
+    if add:
+        table = kept_rows(os.path.join(out, "window.csv"), set(r[1] for r in plan)) + table
     with open(os.path.join(out, "window.csv"), "w") as f:
         f.write("run,window_s,quantity,z_mm,rms,max,n_samples\n")
         for r in table:
