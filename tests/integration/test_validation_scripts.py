@@ -276,8 +276,8 @@ with tempfile.TemporaryDirectory() as tmp:
           "(0.063, not the table's rounded 0.0635): rc %d %s" % (r.returncode, r.stderr.strip()[-200:]))
 
 # etc/runArchive: a stopped 2-rank run packed keeps the case, the samples and the last time complete
-# on both ranks (a time being written on one rank, or without its DEM restart, is not complete), and
-# unpacks into a run folder that Allrun -continue reads; it refuses to unpack over an existing run
+# (the fields of both ranks and the DEM restart coarseDemFoam writes for all ranks in <case>/<time>/),
+# and unpacks into a run folder that Allrun -continue reads; it refuses to unpack over an existing run
 with tempfile.TemporaryDirectory() as tmp:
     run = os.path.join(tmp, "runs", "m_dx1_U0.9_medium")
     def touch(rel, text=""):
@@ -286,16 +286,18 @@ with tempfile.TemporaryDirectory() as tmp:
         open(f, "w").write(text)
     for rel in ("system/controlDict", "constant/couplingProperties", "DEM/in.liggghts", "log.coarseDemFoam",
                 "wall_seconds.txt", "commit.txt", "postProcessing/profiles/0.01/z15_alpha.csv",
-                "0/U", "2.5/U", "processor0/constant/polyMesh/points", "processor1/constant/polyMesh/points"):
+                "0/U", "processor0/constant/polyMesh/points", "processor1/constant/polyMesh/points"):
         touch(rel, rel)
-    for rank in (0, 1):
-        touch("processor%d/0/U" % rank)
-        for t in ("2.25", "2.5"):
+    for t in ("2.25", "2.5", "3"):
+        touch("%s/dem.restart" % t, t)
+        for rank in (0, 1):
+            touch("processor%d/0/U" % rank)
             touch("processor%d/%s/U" % (rank, t), t)
             touch("processor%d/%s/uniform/time" % (rank, t))
-            touch("processor%d/%s/dem.restart.%d" % (rank, t, rank))
-    touch("processor0/2.75/uniform/time")   # being written: on one rank only, no DEM restart yet
-    touch("processor0/2.75/dem.restart.0")
+    touch("processor0/2.75/uniform/time")   # being written: the fields of one rank only
+    touch("2.75/dem.restart")
+    touch("processor0/3/uniform/time")      # 3 was written completely, but before the DEM restart (no file yet):
+    os.remove(os.path.join(run, "3", "dem.restart"))   # not complete either
     archive = os.path.join(tmp, "m.tar.xz")
     tool = os.path.join(top, "etc", "runArchive")
     r = subprocess.run([tool, "pack", run, archive], capture_output=True, text=True)
@@ -303,12 +305,12 @@ with tempfile.TemporaryDirectory() as tmp:
     times = sorted(set(n.split("/")[2] for n in names if n.split("/")[1].startswith("processor") and len(n.split("/")) > 3
                        and n.split("/")[2][0].isdigit()))
     check(r.returncode == 0 and "t = 2.5 (2 ranks)" in r.stdout and times == ["0", "2.5"] and
-          "m_dx1_U0.9_medium/2.5/U" not in names and
           all("m_dx1_U0.9_medium/" + rel in names for rel in ("system/controlDict", "DEM/in.liggghts",
-              "postProcessing/profiles/0.01/z15_alpha.csv", "wall_seconds.txt", "commit.txt",
-              "processor1/2.5/dem.restart.1", "processor0/constant/polyMesh/points")),
-          "runArchive pack: case, samples and the last time complete on both ranks (2.5, not 2.75 nor 2.25): %r, times %s"
-          % (r.stdout.strip() or r.stderr.strip(), times))
+              "postProcessing/profiles/0.01/z15_alpha.csv", "wall_seconds.txt", "commit.txt", "2.5/dem.restart",
+              "processor1/2.5/U", "processor0/constant/polyMesh/points")) and
+          not any(n.startswith("m_dx1_U0.9_medium/" + t + "/") for n in names for t in ("2.25", "2.75", "3")),
+          "runArchive pack: case, samples and the last time complete (2.5: not 3 without its DEM restart, "
+          "2.75 on one rank only, nor the older 2.25): %r, times %s" % (r.stdout.strip() or r.stderr.strip(), times))
     dest = os.path.join(tmp, "elsewhere")
     r = subprocess.run([tool, "unpack", archive, dest], capture_output=True, text=True)
     restored = os.path.join(dest, "m_dx1_U0.9_medium")
