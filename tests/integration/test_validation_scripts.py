@@ -311,6 +311,19 @@ with tempfile.TemporaryDirectory() as tmp:
           not any(n.startswith("m_dx1_U0.9_medium/" + t + "/") for n in names for t in ("2.25", "2.75", "3")),
           "runArchive pack: case, samples and the last time complete (2.5: not 3 without its DEM restart, "
           "2.75 on one rank only, nor the older 2.25): %r, times %s" % (r.stdout.strip() or r.stderr.strip(), times))
+    # -samplesFrom: the samples before the averaging window left out, the rest as before
+    touch("postProcessing/profiles/2.01/z15_alpha.csv", "2.01")
+    touch("postProcessing/profiles/2/z15_alpha.csv", "2")
+    touch("postProcessing/profiles/1.99/z15_alpha.csv", "1.99")
+    touch("postProcessing/readme.txt")
+    windowed = os.path.join(tmp, "m_from2.tar.xz")
+    r2 = subprocess.run([tool, "pack", "-samplesFrom", "2", run, windowed], capture_output=True, text=True)
+    names2 = subprocess.run(["tar", "tJf", windowed], capture_output=True, text=True).stdout.split() if r2.returncode == 0 else []
+    samples = sorted(n.split("/")[3] for n in names2 if n.startswith("m_dx1_U0.9_medium/postProcessing/profiles/")
+                     and len(n.split("/")) > 4 and n.split("/")[4])
+    check(r2.returncode == 0 and samples == ["2", "2.01"] and "m_dx1_U0.9_medium/postProcessing/readme.txt" in names2 and
+          "m_dx1_U0.9_medium/2.5/dem.restart" in names2,
+          "runArchive pack -samplesFrom 2: the samples at 2 s and later only, the rest as without it: %s" % samples)
     dest = os.path.join(tmp, "elsewhere")
     r = subprocess.run([tool, "unpack", archive, dest], capture_output=True, text=True)
     restored = os.path.join(dest, "m_dx1_U0.9_medium")
