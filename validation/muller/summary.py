@@ -295,7 +295,7 @@ def main():
     rows = []
     for run in runs:
         name = os.path.basename(os.path.normpath(run))
-        if os.path.samefile(os.path.dirname(os.path.abspath(os.path.normpath(run))), out) and name in kept:
+        if name in kept and os.path.samefile(os.path.dirname(os.path.abspath(os.path.normpath(run))), out):
             # one of <out>'s own folders: a run summarised before, whose run directory (its logs) may
             # be gone; its row as the last summary wrote it
             rows.append(kept[name])
