@@ -6,7 +6,7 @@ run's pauses taken off its wall time and its stage shares), summary.plot_profile
 window.py on a synthetic run (errors per averaging window against ones computed here, its refusals),
 and etc/runArchive (a stopped run packed and unpacked to continue elsewhere).
 Prints PASS/FAIL per check and "N passed, N failed"."""
-import csv, importlib.util, math, os, random, subprocess, sys, tempfile, time
+import csv, importlib.util, math, os, random, re, subprocess, sys, tempfile, time
 
 top = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 def load(name):
@@ -316,14 +316,33 @@ with tempfile.TemporaryDirectory() as tmp:
     touch("postProcessing/profiles/2/z15_alpha.csv", "2")
     touch("postProcessing/profiles/1.99/z15_alpha.csv", "1.99")
     touch("postProcessing/readme.txt")
+    # series (surfaceFieldValue): a folder per start, its samples running on past T
+    touch("postProcessing/pInlet/0/surfaceFieldValue.dat")        # superseded by the start at 1.5
+    touch("postProcessing/pInlet/1.5/surfaceFieldValue.dat")      # runs on past 2: kept
+    touch("postProcessing/pOutlet/0/surfaceFieldValue.dat")       # one start only: kept
+    # the DEM's particle dumps (the binary bed's post/dump<step>.liggghts), timed by the input's DEM step
+    touch("DEM/in.liggghts", "units si\ntimestep        1e-5\n")
+    for step in ("0000000000", "0000199999", "0000200000", "0000210000"):
+        touch("post/dump%s.liggghts" % step)
+    touch("post/notes.txt")
     windowed = os.path.join(tmp, "m_from2.tar.xz")
     r2 = subprocess.run([tool, "pack", "-samplesFrom", "2", run, windowed], capture_output=True, text=True)
     names2 = subprocess.run(["tar", "tJf", windowed], capture_output=True, text=True).stdout.split() if r2.returncode == 0 else []
     samples = sorted(n.split("/")[3] for n in names2 if n.startswith("m_dx1_U0.9_medium/postProcessing/profiles/")
                      and len(n.split("/")) > 4 and n.split("/")[4])
+    dumps = sorted(n.split("/")[2] for n in names2 if n.startswith("m_dx1_U0.9_medium/post/") and n.split("/")[2])
+    series = sorted(set("/".join(n.split("/")[2:4]) for n in names2 if re.match(r"m_dx1_U0.9_medium/postProcessing/p(In|Out)let/[^/]+/", n)))
     check(r2.returncode == 0 and samples == ["2", "2.01"] and "m_dx1_U0.9_medium/postProcessing/readme.txt" in names2 and
-          "m_dx1_U0.9_medium/2.5/dem.restart" in names2,
-          "runArchive pack -samplesFrom 2: the samples at 2 s and later only, the rest as without it: %s" % samples)
+          "m_dx1_U0.9_medium/2.5/dem.restart" in names2 and series == ["pInlet/1.5", "pOutlet/0"] and
+          dumps == ["dump0000200000.liggghts", "dump0000210000.liggghts", "notes.txt"],
+          "runArchive pack -samplesFrom 2: the samples and DEM dumps at 2 s and later only, a series from its "
+          "last start at or before 2 s, the rest as without it: samples %s, series %s, dumps %s %s"
+          % (samples, series, dumps, r2.stderr.strip()[-200:]))
+    # dumps whose times cannot be known (no timestep line in the DEM input) stop the packing, named
+    touch("DEM/in.liggghts", "units si\n")
+    r3 = subprocess.run([tool, "pack", "-samplesFrom", "2", run, os.path.join(tmp, "bad.tar.xz")], capture_output=True, text=True)
+    check(r3.returncode != 0 and "in.liggghts has no timestep line" in r3.stderr and not os.path.exists(os.path.join(tmp, "bad.tar.xz")),
+          "runArchive pack -samplesFrom refuses dumps of unknown times: %r" % r3.stderr.strip())
     dest = os.path.join(tmp, "elsewhere")
     r = subprocess.run([tool, "unpack", archive, dest], capture_output=True, text=True)
     restored = os.path.join(dest, "m_dx1_U0.9_medium")
