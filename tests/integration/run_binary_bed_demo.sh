@@ -10,6 +10,7 @@
 #   - summary.csv has the agreed header and a row per species;
 #   - bad input is reported by name and time: the run's data again with n = 1.5 (the small
 #     species' kernel within its host cell) and with small particles moved into the top cell layer;
+#     a run stopped before its window's end (its last dumps removed) is refused with the time;
 #   - -continue continues with the run's own case files and refuses, naming the file, with a changed one.
 #   run_binary_bed_demo.sh [-method M] [-U U]          (default bigParticle, 0.015)
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -107,6 +108,18 @@ if grep -q "WARNING .*species small leaves the tube: 10 of its .* at t = $t_last
     result ok "$tag: a layer leaving the tube is named with the time (species small, t = $t_last s)"
 else
     result fail "$tag: the small particles in the top cell layer were not reported with the time $t_last s (see $bad/log.post)"
+fi
+# a run that stopped before its window's end (its dumps after 0.9 s gone) is refused, with the time
+for f in "$bad"/post/dump*.liggghts; do
+    step=$(basename "$f" .liggghts); step=$((10#${step#dump}))
+    [ "$step" -gt 90000 ] && rm "$f"
+done
+if ! /usr/bin/python3 "$case_dir/postprocess.py" "$bad" -method "$method" -U "$U" -mode demo -tstart 0.6 -tend 1.0 \
+        -demdt 1e-5 > "$bad/log.post.early" 2>&1 &&
+   grep -q "FAIL: .*stopped at t = 0.9 s (its last particle dump), before its window's end 1 s" "$bad/log.post.early"; then
+    result ok "$tag: a run stopped before its window's end is refused with the time (t = 0.9 s)"
+else
+    result fail "$tag: a run stopped at 0.9 s was not refused naming the time (see $bad/log.post.early)"
 fi
 rm -rf "$bad"
 

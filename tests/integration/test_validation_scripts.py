@@ -4,7 +4,8 @@ profiles.drop_superseded (samples of a stopped segment re-sampled by its continu
 summary.log_segments (wall seconds per start, cut where the continuation started, MPI ranks; a
 run's pauses taken off its wall time and its stage shares), summary.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs), and
 window.py on a synthetic run (errors per averaging window against ones computed here, its refusals),
-and etc/runArchive (a stopped run packed and unpacked to continue elsewhere).
+etc/runArchive (a stopped run packed and unpacked to continue elsewhere), and the binary bed's
+scripts (pressure samples of every start, runs of one case, the wall-corrected reference).
 Prints PASS/FAIL per check and "N passed, N failed"."""
 import csv, importlib.util, math, os, random, re, subprocess, sys, tempfile, time
 
@@ -352,6 +353,89 @@ with tempfile.TemporaryDirectory() as tmp:
     r = subprocess.run([tool, "unpack", archive, dest], capture_output=True, text=True)
     check(r.returncode != 0 and "exists" in r.stderr and restored in r.stderr,
           "runArchive refuses to unpack over an existing run: %r" % r.stderr.strip())
+
+# the binary bed's scripts (tutorials/binaryBedKhan/postprocess.py, validation/khan/compare.py and
+# references.py): pressure samples of every start, runs of one case only, the wall-corrected line
+def load_path(rel, name):
+    spec = importlib.util.spec_from_file_location(name, os.path.join(top, rel))
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+khan_post = load_path("tutorials/binaryBedKhan/postprocess.py", "khan_postprocess")
+khan_compare = load_path("validation/khan/compare.py", "khan_compare")
+khan_ref = load_path("validation/khan/references.py", "khan_refs")
+with tempfile.TemporaryDirectory() as tmp:
+    # a first start 0..0.5 s; a second from 0.5 killed at 0.7 s; a third again from 0.5 s, whose file
+    # OpenFOAM names surfaceFieldValue_0.5.dat in the same folder, killed while writing its last line
+    def series(folder, fname, times, value, cut=False):
+        d = os.path.join(tmp, "postProcessing", "pInlet", folder)
+        os.makedirs(d, exist_ok=True)
+        with open(os.path.join(d, fname), "w") as f:
+            f.write("# Surface field value\n# Time areaAverage(p)\n")
+            f.write("".join("%g\t%g\n" % (t, value) for t in times))
+            if cut:
+                f.write("1.01\t")
+    steps = lambda a, b: [round(0.01 * k, 2) for k in range(int(round(a * 100)), int(round(b * 100)) + 1)]
+    series("0", "surfaceFieldValue.dat", steps(0.01, 0.5), 1.0)
+    series("0.5", "surfaceFieldValue.dat", steps(0.51, 0.7), 2.0)
+    series("0.5", "surfaceFieldValue_0.5.dat", steps(0.51, 1.0), 3.0, cut=True)
+    t, dp = khan_post.frictional_dp(tmp)
+    p = (dp + khan_ref.RHO_F * khan_ref.G * khan_ref.HEIGHT) / khan_ref.RHO_F
+    check(len(t) == 100 and abs(t[-1] - 1.0) < 1e-12 and (abs(p[t <= 0.5 + 1e-9] - 1.0) < 1e-9).all() and
+          (abs(p[t > 0.5 + 1e-9] - 3.0) < 1e-9).all() and not khan_post.sample_gaps(t),
+          "binary bed pressure: the last start's surfaceFieldValue_0.5.dat replaces the killed start's samples "
+          "from 0.51 s, its cut last line left out (%d samples to %g s, values %s)" % (len(t), t[-1], sorted(set(p.round(6)))))
+    gaps = khan_post.sample_gaps([0.1, 0.2, 0.3, 0.6, 0.7, 0.8])
+    check(gaps == [(0.3, 0.6)], "binary bed pressure: a gap in the samples is found (%s)" % gaps)
+    bad = os.path.join(tmp, "bad.dat")
+    open(bad, "w").write("0.1 1\n0.2 x\n0.3 1\n")
+    try:
+        khan_post.read_fv(bad)
+        raised = ""
+    except ValueError as e:
+        raised = str(e)
+    check("bad.dat" in raised and "0.2 x" in raised, "a bad sample line before the last is an error naming the file: %r" % raised)
+
+    # compare.py: the background label from bed.csv (not the name's last part), mixed cases refused
+    def fake_run(name, mode, background, young):
+        d = os.path.join(tmp, "runs", name, "results")
+        os.makedirs(d)
+        open(os.path.join(d, "bed.csv"), "w").write("method,U,mode,background,young_pa,ranks\nbigParticle,0.015,%s,%s,%s,2\n"
+                                                    % (mode, background, young))
+        open(os.path.join(d, "layers.csv"), "w").write("species\n")
+        open(os.path.join(d, "profiles.csv"), "w").write("z_mm\n")
+        return os.path.dirname(d)
+    a = khan_compare.read_run(fake_run("bigParticle_U0.015_short_background_np2_E1e5", "short", "on", "100000"))
+    b = khan_compare.read_run(fake_run("bigParticle_U0.015_short_np2", "short", "off", "1e+06"))
+    check(a["method"] == "bigParticle+background" and b["method"] == "bigParticle",
+          "binary bed compare.py: background fields labelled from bed.csv with _np2_E1e5 after it (%s, %s)" % (a["method"], b["method"]))
+    try:
+        khan_compare.one_case([a, b])
+        refused = ""
+    except SystemExit as e:
+        refused = str(e)
+    check("mix modes or contact stiffnesses" in refused and "E = 100000 Pa" in refused and "E = 1e+06 Pa" in refused,
+          "binary bed compare.py refuses runs of two contact stiffnesses, naming them: %r" % refused[:160])
+    check(khan_compare.one_case([a]) == ("short", "100000"), "binary bed compare.py: one case passes")
+
+    # references: Richardson-Zaki with the tube's wall correction of u_t, computed here independently
+    u_t = khan_ref.terminal_velocity(1e-3)[0]
+    re_t = u_t * 1e-3 / 1e-6
+    n = (5.1 + 0.27 * re_t ** 0.9) / (1 + 0.1 * re_t ** 0.9)            # Garside & Al-Dibouni, solved for n
+    want = 1 - (0.015 / (u_t * 10 ** -0.1)) ** (1 / n)
+    got = khan_ref.alpha_richardson_zaki_wall(0.015, 1e-3)
+    check(abs(got - want) < 1e-12 and got < khan_ref.alpha_richardson_zaki(0.015, 1e-3) and
+          abs(khan_ref.alpha_richardson_zaki_wall(0.015, 1e-3, D=1e9) - khan_ref.alpha_richardson_zaki(0.015, 1e-3)) < 1e-9,
+          "binary bed references: Richardson-Zaki with u_i = u_t 10^(-d/D), big at 0.015 m/s %.4f (here %.4f), "
+          "the plain line for a wide tube" % (got, want))
+
+    # the wall time of a run without a solver log: its wall_seconds.txt, ranks kept
+    wrun = os.path.join(tmp, "nolog")
+    os.makedirs(wrun)
+    open(os.path.join(wrun, "wall_seconds.txt"), "w").write("100.5 2\n20 2\n")
+    w = summary.run_wall(wrun)
+    check(abs(w[0] - 120.5) < 1e-9 and abs(w[1] - 241) < 1e-9 and w[2] == [2],
+          "summary.run_wall without a log: wall_seconds.txt summed (%g s, %g core-s, ranks %s)" % w[:3])
 
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)

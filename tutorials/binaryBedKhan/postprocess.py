@@ -1,12 +1,13 @@
 #!/usr/bin/python3
 """postprocess.py -- species-resolved layers and pressure of one binaryBedKhan run.
 
-    postprocess.py RUN -method M -U U -mode demo|short|full -tstart T0 -tend T1 -demdt DT -wall S
+    postprocess.py RUN -method M -U U -mode demo|short|full -tstart T0 -tend T1 -demdt DT [-wall S]
 
 Reads the particle dumps (RUN/post/dump*.liggghts: id, type, x, y, z, radius), the pressure on the
-inlet face (RUN/postProcessing/pInlet/*/surfaceFieldValue.dat), the window means of p and alphaP
-(pMean, alphaPMean of the fieldAverage function object) and alphaP at the last written time, and
-writes RUN/results/:
+inlet face (RUN/postProcessing/pInlet/<start>/surfaceFieldValue*.dat), the window means of p and
+alphaP (pMean, alphaPMean of the fieldAverage function object) and alphaP at the last written time
+(a run on several ranks: reconstructed, as Allrun does), the solver log (wall time) and the case's
+own entries (background fields, Young's modulus, ranks), and writes RUN/results/:
 
 - profiles.csv: per 1 mm cell layer z, each species' alpha_p (time mean over the window and its
   batch-means standard error), their sum, the method's own alpha_p (alphaPMean, cross-section mean),
@@ -14,7 +15,10 @@ writes RUN/results/:
 - layers.csv: per species its plateau alpha_p (+- sem), interior, bottom, top, mean height (+- sem),
   the alpha_p the pressure slope gives over the interior, and the references of its U;
 - bed.csv: the whole bed's frictional pressure drop (+- sem) against its buoyant weight, the mixing
-  region, the window, the wall time;
+  region, the window (window_s: from its first to its last dump), the wall time (wall_s: from the
+  solver log's starts, pauses and stretches computed twice left out, as validation/muller/summary.py
+  counts it; -wall S, the summed wall_seconds.txt, only where there is no log), the case (background
+  fields on/off, Young's modulus, MPI ranks);
 - axis_end.csv: alpha_p along the tube's axis at the last dump / written time (Zhang et al. Fig. 16);
 - (bed.csv) the largest overlap of two particles, in % of the smaller one's diameter, at the
   window's first, middle and last dump (a check that the DEM sees every contact);
@@ -32,7 +36,8 @@ Definitions (independent of the void-fraction method: particles binned by the ce
   (k dx <= z < (k + 1) dx, dx = 1 mm) / (A dx), A = 10 x 10 mm; the species is told by its radius
   (the Table III diameter nearest to it).
 - Window: the dumps with tstart <= t <= tend. Time means over them; standard errors by batch means
-  (the window's dumps in 5 consecutive batches: sem = std(batch means) / sqrt(5)).
+  (the window's dumps in 5 consecutive batches: sem = std(batch means) / sqrt(5)). A run whose last
+  dump lies more than one dump interval before tend stopped early: FAIL (continue it first).
 - A species' layer: from its time-mean profile, the heights z05 and z95 below which 5 % and 95 % of
   its volume lie; the interior is the central 60 % of z05..z95 (the layers of cells whose centres lie
   there). plateau = the mean alpha_p,s over the interior; its sem from the same interior mean per
@@ -51,6 +56,11 @@ Definitions (independent of the void-fraction method: particles binned by the ce
   alpha_p from its slope over a layer's interior: -(d p_frictional/dz) / ((rho_p - rho_f) g).
 - Axis: the four cells around x = y = 5 mm (the tube's axis, on their common edge), per cell layer:
   the method's alphaP at the last written time, and each species binned in those cells at the last dump.
+
+- Pressure samples: each start of the solver writes postProcessing/pInlet/<its start time>/, in
+  surfaceFieldValue.dat, or surfaceFieldValue_<t>.dat when that folder holds one already (a second
+  start from the same write time); a later start's samples replace the earlier ones from its first
+  sample on. A gap in the window's samples (a step of more than twice the usual one) is a WARNING.
 
 Bad input is reported by name and time, never clipped (WARNING lines, messages.txt):
 - a species whose particles are smaller than the method's kernel allows: bigParticle when its
@@ -80,6 +90,8 @@ def _load(path, name):
 _mono = _load(os.path.join(TOP, "tutorials", "liquidFluidizedBed", "postprocess.py"), "liquid_bed_postprocess")
 read_dumps, read_fv, batch_sem, NB = _mono.read_dumps, _mono.read_fv, _mono.batch_sem, _mono.NB
 ref = _load(os.path.join(TOP, "validation", "khan", "references.py"), "khan_references")
+# the wall time of a run from its solver log, as the Mueller validation counts it
+run_wall = _load(os.path.join(TOP, "validation", "muller", "summary.py"), "muller_summary").run_wall
 
 NX = NY = 10
 NZ = 120
@@ -141,7 +153,7 @@ def crossing(z, a, start, level, step):
 def layer(z, prof, batch_profiles):
     """Interior, plateau (+- sem), bottom and top of one species from its time-mean profile."""
     cum = np.cumsum(prof) / max(prof.sum(), 1e-300)
-    z05 = float(z[np.searchsorted(cum, 0.05)])
+    z05 = float(z[min(np.searchsorted(cum, 0.05), len(z) - 1)])
     z95 = float(z[min(np.searchsorted(cum, 0.95), len(z) - 1)])
     lo, hi = z05 + 0.2 * (z95 - z05), z95 - 0.2 * (z95 - z05)
     inner = (z >= lo - 1e-12) & (z <= hi + 1e-12)
@@ -296,18 +308,54 @@ def pair_overlap(c):
     return worst, n_bad
 
 
+def pressure_files(run):
+    """The pInlet files of every start in the order they were written: by start folder, then
+    surfaceFieldValue.dat before surfaceFieldValue_<t>.dat (OpenFOAM's name for a second file in
+    the same folder, a later start from the same write time), those by their time."""
+    def order(path):
+        base = os.path.basename(path)
+        m = re.match(r"surfaceFieldValue_([-+0-9.eE]+)\.dat$", base)
+        return (float(os.path.basename(os.path.dirname(path))), 1 if m else 0, float(m.group(1)) if m else 0.0)
+    files = glob.glob(os.path.join(run, "postProcessing", "pInlet", "*", "surfaceFieldValue*.dat"))
+    return sorted((f for f in files if re.match(r"surfaceFieldValue(_[-+0-9.eE]+)?\.dat$", os.path.basename(f))),
+                  key=order)
+
+
 def frictional_dp(run):
-    """(times, rho_f p_inlet - rho_f g L) from every start's pInlet file (a continued run starts a
-    new directory; a later start's samples replace the earlier ones from its start on)."""
-    files = sorted(glob.glob(os.path.join(run, "postProcessing", "pInlet", "*", "surfaceFieldValue.dat")),
-                   key=lambda p: float(os.path.basename(os.path.dirname(p))))
+    """(times, rho_f p_inlet - rho_f g L) from every start's pInlet files (pressure_files; a later
+    start's samples replace the earlier ones from its first sample on)."""
     t_all, p_all = np.zeros(0), np.zeros(0)
-    for f in files:
+    for f in pressure_files(run):
         t, p = read_fv(f)
         if len(t):
             keep = t_all < t[0] - 1e-12
             t_all, p_all = np.concatenate([t_all[keep], t]), np.concatenate([p_all[keep], p])
     return t_all, ref.RHO_F * p_all - ref.RHO_F * ref.G * ref.HEIGHT
+
+
+def sample_gaps(t):
+    """(from, to) of each step of a sample series longer than twice its median step."""
+    steps = np.diff(t)
+    if not len(steps):
+        return []
+    usual = float(np.median(steps))
+    return [(float(t[i]), float(t[i + 1])) for i in np.nonzero(steps > 2 * usual)[0]]
+
+
+def case_entries(run):
+    """(background fields on/off, Young's modulus in Pa, MPI ranks) of the run's own case files:
+    couplingProperties' backgroundFields, DEM/in.liggghts' youngsModulus, decomposeParDict's
+    numberOfSubdomains (1 without one)."""
+    def find(rel, pattern, default):
+        path = os.path.join(run, rel)
+        if not os.path.isfile(path):
+            return default
+        m = re.search(pattern, re.sub(r"//.*", "", open(path).read()), re.M)
+        return m.group(1) if m else default
+    background = find(os.path.join("constant", "couplingProperties"), r"^\s*backgroundFields\s+(\w+)\s*;", "off")
+    young = float(find(os.path.join("DEM", "in.liggghts"), r"youngsModulus\s+peratomtype\s+([0-9.eE+-]+)", "nan"))
+    ranks = int(find(os.path.join("system", "decomposeParDict"), r"numberOfSubdomains\s+(\d+)\s*;", "1"))
+    return ("on" if background in ("on", "true", "yes") else "off"), young, ranks
 
 
 def write_csv(path, header, rows, fmt):
@@ -322,8 +370,10 @@ def main():
     ap.add_argument("run")
     for k in ("method", "mode"):
         ap.add_argument("-" + k, required=True)
-    for k in ("U", "tstart", "tend", "demdt", "wall"):
+    for k in ("U", "tstart", "tend", "demdt"):
         ap.add_argument("-" + k, type=float, required=True)
+    ap.add_argument("-wall", type=float, default=float("nan"),
+                    help="wall seconds where the run has no solver log (Allrun: the summed wall_seconds.txt)")
     a = ap.parse_args()
     name = os.path.basename(os.path.normpath(a.run))
     res = os.path.join(a.run, "results")
@@ -342,6 +392,14 @@ def main():
         print("FAIL: %s: only %d particle dumps in the window %g..%g s (at least %d needed)"
               % (name, len(win), a.tstart, a.tend, 2 * NB))
         return 1
+    every = float(np.median(np.diff([t for t, _ in win])))
+    if win[-1][0] < a.tend - every - 1e-9:
+        print("FAIL: %s: the run stopped at t = %g s (its last particle dump), before its window's end %g s: "
+              "continue it first (Allrun ... -continue)" % (name, win[-1][0], a.tend))
+        return 1
+    window_s = win[-1][0] - win[0][0]
+    background, young, ranks = case_entries(a.run)
+    wall = run_wall(a.run)[0] if os.path.isfile(os.path.join(a.run, "log.coarseDemFoam")) else a.wall
     profs, heights = [], []                     # [dump][species][NZ], [dump][species]
     for t, c in win:
         sp = species_index(c["radius"])
@@ -377,6 +435,10 @@ def main():
     if pw.sum() < 2 * NB:
         print("FAIL: %s: only %d pressure samples in the window" % (name, pw.sum()))
         return 1
+    gaps = sample_gaps(t_dp[pw])
+    if gaps:
+        warnings.append("%d gap(s) in the inlet pressure samples of the window (%s): the pressure drop is the mean of "
+                        "the samples there are" % (len(gaps), ", ".join("%g..%g s" % g for g in gaps[:5])))
     dp_sim, dp_sem = float(dp[pw].mean()), batch_sem(dp[pw])
     first = dumps[0][1]
     sp0 = species_index(first["radius"])
@@ -455,12 +517,13 @@ def main():
               "method,U,mode,tstart,tend,window_s,n_dumps_window,n_dp_samples_window,dp_pa,dp_sem_pa,dp_weight_pa,"
               "dp_rel_err,mixing_width_mm,mixing_width_sem_mm,mixing_width_mean_profile_mm,mixing_lo_mm,mixing_hi_mm,"
               "t_end_dump,t_last_write,max_overlap_pct_d,n_pairs_overlap_over_5pct,binned_fields_moved_big,"
-              "binned_fields_near_face_big,binned_fields_moved_small,binned_fields_near_face_small,wall_s,n_warnings",
-              [[a.method, a.U, a.mode, a.tstart, a.tend, a.tend - a.tstart, len(win), int(pw.sum()), dp_sim, dp_sem,
+              "binned_fields_near_face_big,binned_fields_moved_small,binned_fields_near_face_small,wall_s,n_warnings,"
+              "background,young_pa,ranks",
+              [[a.method, a.U, a.mode, a.tstart, a.tend, window_s, len(win), int(pw.sum()), dp_sim, dp_sem,
                 dp_ref, (dp_sim - dp_ref) / dp_ref, 1e3 * widths.mean(), 1e3 * sem_of(widths),
                 1e3 * mix_mean_prof.sum() * DX, 1e3 * mix_zone[0], 1e3 * mix_zone[1], t_end, last_t,
-                100 * worst_overlap, worst_pairs] + list(fields_check[0]) + list(fields_check[1]) + [a.wall, len(warnings)]],
-              "%s,%.3f,%s,%g,%g,%g,%d,%d,%.3f,%.3f,%.3f,%.5f,%.2f,%.2f,%.1f,%.1f,%.1f,%g,%g,%.3f,%d,%d,%d,%d,%d,%.1f,%d")
+                100 * worst_overlap, worst_pairs] + list(fields_check[0]) + list(fields_check[1]) + [wall, len(warnings), background, young, ranks]],
+              "%s,%.3f,%s,%g,%g,%g,%d,%d,%.3f,%.3f,%.3f,%.5f,%.2f,%.2f,%.1f,%.1f,%.1f,%g,%g,%.3f,%d,%d,%d,%d,%d,%.1f,%d,%s,%g,%d")
     write_csv(os.path.join(res, "axis_end.csv"),
               "z_mm,alphaP_method_t%g,%s" % (last_t, ",".join("alpha_%s_binned_t%g" % (s, t_end) for s in SPECIES)),
               [[1e3 * z[k], axis_solver[k]] + [axis_species[s][k] for s in range(len(SPECIES))] for k in range(NZ)],
@@ -493,8 +556,8 @@ def main():
     print("%s: frictional dp %.2f +- %.2f Pa against the buoyant weight %.2f Pa (%+.2f %%); mixing region %.2f +- %.2f mm "
           "(on the mean profiles %.1f mm, %.1f..%.1f mm); largest overlap %.2f %% d; window %g..%g s, %d dumps; wall %.0f s"
           % (name, dp_sim, dp_sem, dp_ref, 100 * (dp_sim - dp_ref) / dp_ref, 1e3 * widths.mean(), 1e3 * sem_of(widths),
-             1e3 * mix_mean_prof.sum() * DX, 1e3 * mix_zone[0], 1e3 * mix_zone[1], 100 * worst_overlap, a.tstart,
-             a.tend, len(win), a.wall))
+             1e3 * mix_mean_prof.sum() * DX, 1e3 * mix_zone[0], 1e3 * mix_zone[1], 100 * worst_overlap, win[0][0],
+             win[-1][0], len(win), wall))
     return 0
 
 

@@ -78,14 +78,21 @@ def read_dumps(run, demdt):
 
 
 def read_fv(path):
+    """(times, values) of a surfaceFieldValue file. Its last line may be cut short (the run was
+    killed while writing it): left out; a bad line anywhere else is an error naming the file."""
     t, v = [], []
     with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            s = line.split()
-            t.append(float(s[0]))
-            v.append(float(s[1]))
+        lines = [l for l in f if l.strip() and not l.startswith("#")]
+    for i, line in enumerate(lines):
+        s = line.split()
+        try:
+            ti, vi = float(s[0]), float(s[1])
+        except (IndexError, ValueError):
+            if i == len(lines) - 1:
+                break
+            raise ValueError("%s: unreadable sample line %r" % (path, line.rstrip("\n")))
+        t.append(ti)
+        v.append(vi)
     return np.array(t), np.array(v)
 
 

@@ -20,6 +20,13 @@ Per species of diameter d and superficial velocity U:
    32, 35 (1954)): U/u_t = (1 - alpha_p)^n, with the exponent of Garside & Al-Dibouni (Ind. Eng.
    Chem. Process Des. Dev. 16, 206 (1977)), (5.1 - n)/(n - 2.7) = 0.1 Re_t^0.9, as the paper does.
    No wall correction (the CFD-DEM has none). This is the paper's Fig. 16 line.
+2b. alpha_richardson_zaki_wall(U, d): the same with Richardson & Zaki's (1954) wall correction of
+   the velocity the line extrapolates to, u_i = u_t 10^(-d/D) (D: the square tube's width; d/D =
+   0.1 for the big species), the Garside-Al-Dibouni exponent kept. Not the acceptance reference:
+   what the walls of the experiment's tube would do to it, stated beside the comparison. With
+   exponent_wall=True also their exponent's wall term, n = 4.35 + 17.5 (d/D) Re_t^-0.03 (0.2 < Re_t
+   < 1), (4.45 + 18 d/D) Re_t^-0.1 (1 < Re_t < 200), 4.45 Re_t^-0.1 (200 < Re_t < 500), 2.39 above,
+   4.65 + 19.5 d/D below 0.2 (their whole correlation; printed, a far larger change).
 3. alpha_drag_equilibrium(U, d): the homogeneous layer in equilibrium under the code's Di Felice
    drag (src/openfoam/forceModels/DiFeliceDrag.C; Di Felice, Int. J. Multiphase Flow 20, 153
    (1994); Zhang et al. eqs. A4-A7) in Model A: the drag on a particle at rest carries eps times its
@@ -86,6 +93,28 @@ def alpha_richardson_zaki(U, d):
     return 1 - (U / u_t) ** (1 / rz_exponent(re_t)) if U < u_t else float("nan")
 
 
+def rz_exponent_wall(re_t, d_over_D):
+    """Richardson & Zaki's (1954) exponent with their wall term d/D."""
+    if re_t < 0.2:
+        return 4.65 + 19.5 * d_over_D
+    if re_t < 1:
+        return (4.35 + 17.5 * d_over_D) * re_t ** -0.03
+    if re_t < 200:
+        return (4.45 + 18 * d_over_D) * re_t ** -0.1
+    if re_t < 500:
+        return 4.45 * re_t ** -0.1
+    return 2.39
+
+
+def alpha_richardson_zaki_wall(U, d, D=WIDTH, exponent_wall=False):
+    """alpha_p from Richardson-Zaki with the wall correction of a tube of width D (2b above):
+    U/u_i = (1 - alpha_p)^n, u_i = u_t 10^(-d/D); nan when U >= u_i."""
+    u_t, re_t = terminal_velocity(d)
+    u_i = u_t * 10 ** (-d / D)
+    n = rz_exponent_wall(re_t, d / D) if exponent_wall else rz_exponent(re_t)
+    return 1 - (U / u_i) ** (1 / n) if U < u_i else float("nan")
+
+
 def alpha_drag_equilibrium(U, d):
     """alpha_p of the homogeneous layer in equilibrium under the code's Di Felice drag (Model A,
     superficial Re); nan when no voidage below 1 holds the particles (U above their terminal
@@ -113,7 +142,9 @@ def rows(velocities):
             a_rz, a_df = alpha_richardson_zaki(U, d), alpha_drag_equilibrium(U, d)
             vs = species_volume(name)
             out.append(dict(U=U, species=name, d_mm=1e3 * d, N=n, Ar=archimedes(d), Re_t=re_t, u_t_mm_s=1e3 * u_t,
-                            n_rz=rz_exponent(re_t), alpha_rz=a_rz, alpha_drag=a_df,
+                            n_rz=rz_exponent(re_t), alpha_rz=a_rz, alpha_rz_wall=alpha_richardson_zaki_wall(U, d),
+                            alpha_rz_wall_exponent=alpha_richardson_zaki_wall(U, d, exponent_wall=True),
+                            alpha_drag=a_df,
                             H_rz_mm=1e3 * layer_height(a_rz, vs), H_drag_mm=1e3 * layer_height(a_df, vs),
                             dp_species_pa=dp_weight(vs)))
     return out
@@ -142,8 +173,10 @@ def main(argv):
         print("%-5s d = %.1f mm: Ar = %.1f, Re_t = %.2f, u_t = %.2f mm/s (paper's Re_t(Ar)), n = %.3f "
               "(Garside-Al-Dibouni)" % (name, r["d_mm"], r["Ar"], r["Re_t"], r["u_t_mm_s"], r["n_rz"]))
     for r in rr:
-        print("U = %.3f m/s %-5s: alpha_p Richardson-Zaki %.4f (H %.1f mm), Di Felice equilibrium %.4f (H %.1f mm)"
-              % (r["U"], r["species"], r["alpha_rz"], r["H_rz_mm"], r["alpha_drag"], r["H_drag_mm"]))
+        print("U = %.3f m/s %-5s: alpha_p Richardson-Zaki %.4f (H %.1f mm; wall-corrected u_i %.4f, and their "
+              "exponent's wall term %.4f), Di Felice equilibrium %.4f (H %.1f mm)"
+              % (r["U"], r["species"], r["alpha_rz"], r["H_rz_mm"], r["alpha_rz_wall"], r["alpha_rz_wall_exponent"],
+                 r["alpha_drag"], r["H_drag_mm"]))
     if csv_path:
         keys = list(rr[0].keys())
         with open(csv_path, "w") as f:

@@ -231,6 +231,24 @@ def stage_times(segs):
             total[k] = total.get(k, 0.0) + v
     return total or None
 
+def run_wall(run):
+    """(wall seconds, core seconds, sorted MPI rank counts, log segments, pauses) of a run directory.
+    The solver log has every start, also one cut by a kill, each with its ranks (OpenFOAM's nProcs),
+    its pauses taken off and the stretch computed again after a restart counted once
+    (log_segments); wall_seconds.txt (one line per (re)start that returned, "<wall seconds>
+    [<MPI ranks>]") only where there is no log."""
+    logs = [p for p in (os.path.join(run, "log.coarseDemFoam"), os.path.join(run, "log.DPMFoam")) if os.path.exists(p)]
+    segs = log_segments(logs[0]) if logs else []
+    if segs:
+        wall = sum(seg["clock"] - seg["paused"] for seg in segs)
+        core = sum((seg["clock"] - seg["paused"]) * seg["nprocs"] for seg in segs)
+        return wall, core, sorted(set(seg["nprocs"] for seg in segs)), segs, [p for seg in segs for p in seg["pauses"]]
+    wpath = os.path.join(run, "wall_seconds.txt")
+    starts = [l.split() for l in open(wpath) if l.strip()] if os.path.exists(wpath) else []
+    wall = sum(float(t[0]) for t in starts)
+    core = sum(float(t[0]) * (int(t[1]) if len(t) > 1 else 1) for t in starts)
+    return wall, core, sorted(set(int(t[1]) if len(t) > 1 else 1 for t in starts)) or [1], segs, []
+
 # error_vs_runtime.csv's columns after "instrument", in order, and the row keys they hold
 CSV_ERRORS = ("void_rms", "void_max", "void_sem", "void_sym", "void_clean",
               "vz_rms", "vz_max", "vz_sem", "vz_sym", "vz_clean", "void_other", "vz_other")
@@ -305,24 +323,10 @@ def main():
             print(f"summary.py: {name}: no comparison yet, skipped")
             continue
         errs = error_fields(path, head, other)
-        # the solver log has every start, also one cut by a kill; wall_seconds.txt (one line per
-        # (re)start that returned, "<wall seconds> [<MPI ranks>]") only where there is no log
-        wpath = os.path.join(run, "wall_seconds.txt")
-        starts = [l.split() for l in open(wpath) if l.strip()] if os.path.exists(wpath) else []
-        logs = [p for p in (os.path.join(run, "log.coarseDemFoam"), os.path.join(run, "log.DPMFoam")) if os.path.exists(p)]
-        segs = log_segments(logs[0]) if logs else []
-        if segs:   # every start, also one cut by a kill, with its MPI ranks (OpenFOAM's nProcs)
-            wall = sum(seg["clock"] - seg["paused"] for seg in segs)
-            core = sum((seg["clock"] - seg["paused"]) * seg["nprocs"] for seg in segs)
-            pauses = [p for seg in segs for p in seg["pauses"]]
-            if pauses:
-                print(f"summary.py: {name}: {len(pauses)} pause(s) of the run taken off its wall time "
-                      f"(" + ", ".join(f"{p:.0f} s at t = {t:g} s" for t, p in pauses) + ") and left out of its stage shares")
-            rank_set = sorted(set(seg["nprocs"] for seg in segs))
-        else:
-            wall = sum(float(t[0]) for t in starts)
-            core = sum(float(t[0]) * (int(t[1]) if len(t) > 1 else 1) for t in starts)
-            rank_set = sorted(set(int(t[1]) if len(t) > 1 else 1 for t in starts)) or [1]
+        wall, core, rank_set, segs, pauses = run_wall(run)
+        if pauses:
+            print(f"summary.py: {name}: {len(pauses)} pause(s) of the run taken off its wall time "
+                  f"(" + ", ".join(f"{p:.0f} s at t = {t:g} s" for t, p in pauses) + ") and left out of its stage shares")
         ranks = "/".join(str(r) for r in rank_set)
         cpath = os.path.join(run, "commit.txt")
         commit = " ".join(sorted(set(l.strip() for l in open(cpath) if l.strip()))) if os.path.exists(cpath) else "unknown"
