@@ -20,6 +20,8 @@ contacts differ); velocities, methods, background fields and ranks may differ. O
   method: the run's method, "+background" with background fields (bed.csv's background column, or
   a name part "background" in a run post-processed before that column);
 - table.md: the same with the drag-law equilibrium, the pressure-slope alpha_p and the mean heights;
+- error_vs_runtime.png: each run's plateau error against Richardson-Zaki per species against its
+  core-seconds (wall_s x ranks) and its coupling share;
 - alpha_p_profiles.png: per velocity, each species' time-mean alpha_p(z) of every run (band: +- 2
   batch-means sem) and, below, the method's own alpha_p on the tube's axis at the end (the paper's
   Fig. 16), against the two references drawn over the height of the ideal layers (big on the
@@ -181,25 +183,23 @@ def reference_lines(ax, U, vols, z_top):
         z0 += ref.layer_height(a_rz, vols[sp]) if a_rz == a_rz else 0
 
 
-def plot(path, runs):
+def palette_of(plt, methods):
+    """One colour per method (tab10, tab20 beyond ten)."""
+    cmap = plt.get_cmap("tab10" if len(methods) <= 10 else "tab20")
+    return lambda method: cmap(methods.index(method) % cmap.N)
+
+
+def plot(path, runs, plt):
     """Top row: each species' time-mean profile per run and velocity; bottom row: the method's
     alpha_p on the axis at the end (the paper's Fig. 16), both against the references."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("compare.py: matplotlib not available, no plot")
-        return
     us = sorted({float(r["bed"]["U"]) for r in runs})
     fig, axes = plt.subplots(2, len(us), figsize=(4.6 * len(us), 9.5), squeeze=False)
-    methods = sorted({r["method"] for r in runs})
-    palette = matplotlib.colormaps["tab10" if len(methods) <= 10 else "tab20"]
+    colour_of = palette_of(plt, sorted({r["method"] for r in runs}))
     for col, U in enumerate(us):
         mine = [r for r in runs if float(r["bed"]["U"]) == U]
         top = 0.0
         for r in mine:
-            colour = palette(methods.index(r["method"]) % palette.N)
+            colour = colour_of(r["method"])
             z = [float(p["z_mm"]) for p in r["prof"]]
             for sp, style in zip(ref.SPECIES, ("-", "--")):
                 a = [float(p["alpha_" + sp]) for p in r["prof"]]
@@ -227,6 +227,35 @@ def plot(path, runs):
             ax.grid(alpha=0.3)
             ax.legend(fontsize=6)
     fig.suptitle("binaryBedKhan: solid 1 mm, dashed 0.3 mm", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def plot_error_vs_runtime(path, runs, plt):
+    """Each run's plateau error against Richardson-Zaki (big: filled, small: open) against its wall
+    core-seconds (wall time x MPI ranks: runs on 1 and 2 ranks side by side; left) and its coupling
+    share (right), as the Mueller validation's error_vs_runtime.png."""
+    colour_of = palette_of(plt, sorted({r["method"] for r in runs}))
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
+    for r in runs:
+        for sp, face in (("big", None), ("small", "none")):
+            l = r["layers"][sp]
+            err = abs(float(l["alpha_p_plateau"]) - float(l["alpha_p_richardson_zaki"]))
+            core = float(r["bed"]["wall_s"]) * int(r["bed"].get("ranks") or 1)
+            for ax, x in ((axes[0], core), (axes[1], 100 * r["share"])):
+                ax.plot([x], [err], "o", ms=7, color=colour_of(r["method"]),
+                        mfc=face if face else colour_of(r["method"]),
+                        label="%s, %s, U = %s" % (r["method"], sp, r["bed"]["U"]))
+    for ax, xlabel in ((axes[0], "core-seconds (wall time x ranks)"), (axes[1], "coupling share of the stages (%)")):
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel("|plateau alpha_p - Richardson-Zaki|")
+        ax.axhline(0.03, color="k", lw=0.8, ls=":")
+        ax.set_ylim(bottom=0)
+        ax.grid(alpha=0.3)
+    axes[1].legend(fontsize=6)
+    fig.suptitle("binaryBedKhan: error against run time (filled: 1 mm layer, open: 0.3 mm; dotted: issue 19's 0.03)",
+                 fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -262,13 +291,20 @@ def main(argv):
         w.writeheader()
         w.writerows(rows)
     write_table(os.path.join(out, "table.md"), runs, (mode, young))
-    plot(os.path.join(out, "alpha_p_profiles.png"), runs)
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        plot(os.path.join(out, "alpha_p_profiles.png"), runs, plt)
+        plot_error_vs_runtime(os.path.join(out, "error_vs_runtime.png"), runs, plt)
+    except ImportError:
+        print("compare.py: matplotlib not available, no plots")
     for r in runs:
         for w in r["warnings"]:
             print(w)
     checks(runs)
     print("compare.py: %d runs (mode %s, E = %s Pa), %d rows: %s" % (len(runs), mode, young, len(rows), ", ".join(
-        os.path.join(out, f) for f in ("summary.csv", "table.md", "alpha_p_profiles.png"))))
+        os.path.join(out, f) for f in ("summary.csv", "table.md", "alpha_p_profiles.png", "error_vs_runtime.png"))))
     return 0
 
 
