@@ -397,11 +397,13 @@ with tempfile.TemporaryDirectory() as tmp:
     check("bad.dat" in raised and "0.2 x" in raised, "a bad sample line before the last is an error naming the file: %r" % raised)
 
     # compare.py: the background label from bed.csv (not the name's last part), mixed cases refused
-    def fake_run(name, mode, background, young):
+    def fake_run(name, mode, background, young, costs=True):
         d = os.path.join(tmp, "runs", name, "results")
         os.makedirs(d)
-        open(os.path.join(d, "bed.csv"), "w").write("method,U,mode,background,young_pa,ranks\nbigParticle,0.015,%s,%s,%s,2\n"
-                                                    % (mode, background, young))
+        cols = ",coupling_share,dem_per_fluid,coupling_per_fluid,commit" if costs else ""
+        vals = ",0.035,20.2,0.77,b87f5cf" if costs else ""
+        open(os.path.join(d, "bed.csv"), "w").write("method,U,mode,background,young_pa,ranks%s\nbigParticle,0.015,%s,%s,%s,2%s\n"
+                                                    % (cols, mode, background, young, vals))
         open(os.path.join(d, "layers.csv"), "w").write("species\n")
         open(os.path.join(d, "profiles.csv"), "w").write("z_mm\n")
         return os.path.dirname(d)
@@ -417,6 +419,13 @@ with tempfile.TemporaryDirectory() as tmp:
     check("mix modes or contact stiffnesses" in refused and "E = 100000 Pa" in refused and "E = 1e+06 Pa" in refused,
           "binary bed compare.py refuses runs of two contact stiffnesses, naming them: %r" % refused[:160])
     check(khan_compare.one_case([a]) == ("short", "100000"), "binary bed compare.py: one case passes")
+    try:
+        khan_compare.read_run(fake_run("centre_U0.015_short", "short", "off", "1e+06", costs=False))
+        refused = ""
+    except SystemExit as e:
+        refused = str(e)
+    check("bed.csv has no coupling_share" in refused and "-post again" in refused,
+          "binary bed compare.py refuses a bed.csv without the stage costs, saying to post-process again: %r" % refused[-120:])
 
     # references: Richardson-Zaki with the tube's wall correction of u_t, computed here independently
     u_t = khan_ref.terminal_velocity(1e-3)[0]

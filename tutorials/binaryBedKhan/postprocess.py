@@ -18,7 +18,9 @@ own entries (background fields, Young's modulus, ranks), and writes RUN/results/
   region, the window (window_s: from its first to its last dump), the wall time (wall_s: from the
   solver log's starts, pauses and stretches computed twice left out, as validation/muller/summary.py
   counts it; -wall S, the summed wall_seconds.txt, only where there is no log), the case (background
-  fields on/off, Young's modulus, MPI ranks);
+  fields on/off, Young's modulus, MPI ranks), the stage costs (coupling share of the stage timers,
+  DEM / fluid and coupling / fluid) and the commit(s) of commit.txt: so a copy of results/ is all
+  validation/khan/compare.py needs;
 - axis_end.csv: alpha_p along the tube's axis at the last dump / written time (Zhang et al. Fig. 16);
 - (bed.csv) the largest overlap of two particles, in % of the smaller one's diameter, at the
   window's first, middle and last dump (a check that the DEM sees every contact);
@@ -90,8 +92,10 @@ def _load(path, name):
 _mono = _load(os.path.join(TOP, "tutorials", "liquidFluidizedBed", "postprocess.py"), "liquid_bed_postprocess")
 read_dumps, read_fv, batch_sem, NB = _mono.read_dumps, _mono.read_fv, _mono.batch_sem, _mono.NB
 ref = _load(os.path.join(TOP, "validation", "khan", "references.py"), "khan_references")
-# the wall time of a run from its solver log, as the Mueller validation counts it
-run_wall = _load(os.path.join(TOP, "validation", "muller", "summary.py"), "muller_summary").run_wall
+# the wall time and stage timers of a run from its solver log, as the Mueller validation reads them
+_summary = _load(os.path.join(TOP, "validation", "muller", "summary.py"), "muller_summary")
+run_wall, log_segments, stage_times, NOT_COUPLING = (_summary.run_wall, _summary.log_segments, _summary.stage_times,
+                                                     _summary.NOT_COUPLING)
 
 NX = NY = 10
 NZ = 120
@@ -342,6 +346,34 @@ def sample_gaps(t):
     return [(float(t[i]), float(t[i + 1])) for i in np.nonzero(steps > 2 * usual)[0]]
 
 
+def stage_costs(log):
+    """(coupling share, DEM / fluid, coupling / fluid) from the solver's stage timers. Coupling:
+    every stage of the last "Stage timers" line but DEM, fluid and fields; its share is over the sum
+    of all stages. A continued run's log holds one start per (re)start, each timing from its own
+    start: their last lines are summed (a -continue at the end time adds a start of no steps, whose
+    line alone would be its set-up); pauses left out (summary.log_segments). nan without any line."""
+    nan = float("nan")
+    stages = stage_times(log_segments(log)) if os.path.isfile(log) else None
+    if not stages:
+        return nan, nan, nan
+    total = sum(stages.values())
+    coupling = sum(v for k, v in stages.items() if k not in NOT_COUPLING)
+    fluid = stages.get("fluid", 0.0)
+    return (coupling / total if total > 0 else nan, stages.get("DEM", 0.0) / fluid if fluid > 0 else nan,
+            coupling / fluid if fluid > 0 else nan)
+
+
+def commit_of(run):
+    """The commits the run was made with (commit.txt, one line per start: commit [date]), joined by
+    '+', or 'unknown'."""
+    path = os.path.join(run, "commit.txt")
+    seen = []
+    for line in open(path) if os.path.isfile(path) else []:
+        if line.split() and line.split()[0] not in seen:
+            seen.append(line.split()[0])
+    return "+".join(seen) or "unknown"
+
+
 def case_entries(run):
     """(background fields on/off, Young's modulus in Pa, MPI ranks) of the run's own case files:
     couplingProperties' backgroundFields, DEM/in.liggghts' youngsModulus, decomposeParDict's
@@ -399,7 +431,9 @@ def main():
         return 1
     window_s = win[-1][0] - win[0][0]
     background, young, ranks = case_entries(a.run)
-    wall = run_wall(a.run)[0] if os.path.isfile(os.path.join(a.run, "log.coarseDemFoam")) else a.wall
+    log = os.path.join(a.run, "log.coarseDemFoam")
+    wall = run_wall(a.run)[0] if os.path.isfile(log) else a.wall
+    costs = stage_costs(log)
     profs, heights = [], []                     # [dump][species][NZ], [dump][species]
     for t, c in win:
         sp = species_index(c["radius"])
@@ -518,12 +552,13 @@ def main():
               "dp_rel_err,mixing_width_mm,mixing_width_sem_mm,mixing_width_mean_profile_mm,mixing_lo_mm,mixing_hi_mm,"
               "t_end_dump,t_last_write,max_overlap_pct_d,n_pairs_overlap_over_5pct,binned_fields_moved_big,"
               "binned_fields_near_face_big,binned_fields_moved_small,binned_fields_near_face_small,wall_s,n_warnings,"
-              "background,young_pa,ranks",
+              "background,young_pa,ranks,coupling_share,dem_per_fluid,coupling_per_fluid,commit",
               [[a.method, a.U, a.mode, a.tstart, a.tend, window_s, len(win), int(pw.sum()), dp_sim, dp_sem,
                 dp_ref, (dp_sim - dp_ref) / dp_ref, 1e3 * widths.mean(), 1e3 * sem_of(widths),
                 1e3 * mix_mean_prof.sum() * DX, 1e3 * mix_zone[0], 1e3 * mix_zone[1], t_end, last_t,
-                100 * worst_overlap, worst_pairs] + list(fields_check[0]) + list(fields_check[1]) + [wall, len(warnings), background, young, ranks]],
-              "%s,%.3f,%s,%g,%g,%g,%d,%d,%.3f,%.3f,%.3f,%.5f,%.2f,%.2f,%.1f,%.1f,%.1f,%g,%g,%.3f,%d,%d,%d,%d,%d,%.1f,%d,%s,%g,%d")
+                100 * worst_overlap, worst_pairs] + list(fields_check[0]) + list(fields_check[1]) + [wall, len(warnings), background, young, ranks] + list(costs) + [commit_of(a.run)]],
+              "%s,%.3f,%s,%g,%g,%g,%d,%d,%.3f,%.3f,%.3f,%.5f,%.2f,%.2f,%.1f,%.1f,%.1f,%g,%g,%.3f,%d,%d,%d,%d,%d,%.1f,%d,%s,%g,%d,"
+              "%.4f,%.3f,%.4f,%s")
     write_csv(os.path.join(res, "axis_end.csv"),
               "z_mm,alphaP_method_t%g,%s" % (last_t, ",".join("alpha_%s_binned_t%g" % (s, t_end) for s in SPECIES)),
               [[1e3 * z[k], axis_solver[k]] + [axis_species[s][k] for s in range(len(SPECIES))] for k in range(NZ)],

@@ -4,7 +4,9 @@
     compare.py OUT RUN [RUN ...]
 
 RUN: a run directory of tutorials/binaryBedKhan (runs/<method>_U<U>_<mode>[_background][_np<N>][_E<E>]/)
-that postprocess.py has processed (its results/bed.csv, layers.csv, profiles.csv, messages.txt). The
+that postprocess.py has processed (its results/bed.csv, layers.csv, profiles.csv, messages.txt; the
+case, the stage costs and the commit are bed.csv's columns, so a copy of results/ alone will do, as
+validation/khan/results/runs/ keeps them). The
 runs compared must share one mode and one Young's modulus (refused otherwise: their windows and
 contacts differ); velocities, methods, background fields and ranks may differ. OUT gets:
 
@@ -14,7 +16,8 @@ contacts differ); velocities, methods, background fields and ranks may differ. O
   alpha_p_reference: Richardson-Zaki with the Garside-Al-Dibouni exponent (the paper's Fig. 16
   line; references.py); dp_pa, dp_reference_pa, mixing_width_mm: the whole bed's (the same on both
   rows of a run); coupling_share: on the solver's last "Stage timers" line, every stage but DEM,
-  fluid and fields over the sum of all stages (a continued run: each start's last line, summed);
+  fluid and fields over the sum of all stages (a continued run: each start's last line, summed;
+  postprocess.py);
   wall_s: the run's wall seconds from its solver log (postprocess.py: pauses and stretches computed
   twice left out); window_s: from the window's first to its last dump;
   method: the run's method, "+background" with background fields (bed.csv's background column, or
@@ -32,7 +35,7 @@ contacts differ); velocities, methods, background fields and ranks may differ. O
   Richardson-Zaki line with the wall correction of the 10 mm tube (references.py 2b), which the
   simulation (no wall term in its drag) is not held to.
 """
-import csv, importlib.util, math, os, re, sys
+import csv, importlib.util, math, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 HEADER = ("method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,"
@@ -47,33 +50,12 @@ def _load(path, name):
 
 
 ref = _load(os.path.join(HERE, "references.py"), "khan_references")
-# the solver log's segments (one per start) and which stages are not the coupling's, as the Mueller
-# validation reads them
-_muller = _load(os.path.join(HERE, "..", "muller", "summary.py"), "muller_summary")
-log_segments, stage_times, NOT_COUPLING = _muller.log_segments, _muller.stage_times, _muller.NOT_COUPLING
-
-
 # Zhang et al. (2023) §V.C, the binary bed's costs in multiples of the fluid solve's CPU time: the
 # DEM about 23; the solid quantities per method (their names: PCM, big particle, diffusion based,
 # DPVM); the fluid-phase reconstruction (background fields) about 2.69
+# the columns of bed.csv (postprocess.py) this script reads beyond the results
+BED_CASE = ("background", "young_pa", "ranks", "coupling_share", "dem_per_fluid", "coupling_per_fluid", "commit")
 PAPER_COST = {"DEM": 23.0, "centre": 3.85, "bigParticle": 4.37, "diffusion": 4.82, "divided": 4.91, "background": 2.69}
-
-
-def stage_costs(log):
-    """(coupling share, DEM / fluid, coupling / fluid) from the solver's stage timers. Coupling:
-    every stage of the last "Stage timers" line but DEM, fluid and fields; its share is over the sum
-    of all stages. A continued run's log holds one start per (re)start, each timing from its own
-    start: their last lines are summed (a -continue at the end time adds a start of no steps, whose
-    line alone would be its set-up); pauses left out (summary.log_segments). nan without any line."""
-    nan = float("nan")
-    stages = stage_times(log_segments(log)) if os.path.isfile(log) else None
-    if not stages:
-        return nan, nan, nan
-    total = sum(stages.values())
-    coupling = sum(v for k, v in stages.items() if k not in NOT_COUPLING)
-    fluid = stages.get("fluid", 0.0)
-    return (coupling / total if total > 0 else nan, stages.get("DEM", 0.0) / fluid if fluid > 0 else nan,
-            coupling / fluid if fluid > 0 else nan)
 
 
 def read_csv(path):
@@ -87,22 +69,20 @@ def read_run(run):
         if not os.path.isfile(os.path.join(res, f)):
             raise SystemExit("compare.py: %s has no results/%s (run postprocess.py first, or Allrun -post)" % (run, f))
     bed = read_csv(os.path.join(res, "bed.csv"))[0]
+    missing = [k for k in BED_CASE if k not in bed]
+    if missing:
+        raise SystemExit("compare.py: %s/results/bed.csv has no %s: it was post-processed by an older postprocess.py; "
+                         "run Allrun ... -post again" % (run, ", ".join(missing)))
     layers = {r["species"]: r for r in read_csv(os.path.join(res, "layers.csv"))}
     prof = read_csv(os.path.join(res, "profiles.csv"))
     axis = read_csv(os.path.join(res, "axis_end.csv")) if os.path.isfile(os.path.join(res, "axis_end.csv")) else []
-    log = os.path.join(run, "log.coarseDemFoam")
-    share, dem_per_fluid, coupling_per_fluid = stage_costs(log)
     msgs = os.path.join(res, "messages.txt")
     warnings = [l.rstrip("\n") for l in open(msgs)] if os.path.isfile(msgs) else []
     name = os.path.basename(os.path.normpath(run))
-    parts = name.split("_")
-    # bed.csv's case columns; a run post-processed before them: its name's parts
-    background = bed.get("background") or ("on" if "background" in parts else "off")
-    young = bed.get("young_pa") or next((p[1:] for p in parts if re.fullmatch(r"E[0-9.]+e?[0-9+-]*", p)), "")
-    method = bed["method"] + ("+background" if background == "on" else "")
-    return dict(name=name, method=method, bed=bed, layers=layers, prof=prof, axis=axis, share=share, warnings=warnings,
-                dem_per_fluid=dem_per_fluid, coupling_per_fluid=coupling_per_fluid,
-                case=(bed["mode"], "%g" % float(young) if young else "the mode's"))
+    method = bed["method"] + ("+background" if bed["background"] == "on" else "")
+    return dict(name=name, method=method, bed=bed, layers=layers, prof=prof, axis=axis, warnings=warnings,
+                share=float(bed["coupling_share"]), dem_per_fluid=float(bed["dem_per_fluid"]),
+                coupling_per_fluid=float(bed["coupling_per_fluid"]), case=(bed["mode"], "%g" % float(bed["young_pa"])))
 
 
 def one_case(runs):
