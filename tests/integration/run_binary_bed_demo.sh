@@ -97,7 +97,7 @@ awk 'BEGIN { n = 0 } /^ITEM: ATOMS/ { atoms = 1; print; next }
      atoms && $2 == 2 && n < 10 { $5 = 0.1195; n++ } { print }' "$last" > "$last.new" && mv "$last.new" "$last"
 t_last=$(/usr/bin/python3 -c "import sys; print('%g' % (int(open(sys.argv[1]).readlines()[1]) * 1e-5))" "$last")
 /usr/bin/python3 "$case_dir/postprocess.py" "$bad" -method "$method" -U "$U" -mode demo -tstart 0.6 -tend 1.0 \
-    -demdt 1e-5 -wall 0 > "$bad/log.post" 2>&1
+    -demdt 1e-5 > "$bad/log.post" 2>&1
 if grep -q "WARNING .*species small (d = 0.30 mm.*smaller than the bigParticle kernel reach allows" "$bad/log.post" &&
    grep -q "present at t = 0 s" "$bad/log.post"; then
     result ok "$tag: a species too small for the kernel is named with the time (n = 1.5: $(grep -o 'expanded diameter 2 n R = [0-9.]* mm' "$bad/log.post" | head -1))"

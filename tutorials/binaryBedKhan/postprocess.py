@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """postprocess.py -- species-resolved layers and pressure of one binaryBedKhan run.
 
-    postprocess.py RUN -method M -U U -mode demo|short|full -tstart T0 -tend T1 -demdt DT [-wall S]
+    postprocess.py RUN -method M -U U -mode demo|short|full -tstart T0 -tend T1 -demdt DT
 
 Reads the particle dumps (RUN/post/dump*.liggghts: id, type, x, y, z, radius), the pressure on the
 inlet face (RUN/postProcessing/pInlet/<start>/surfaceFieldValue*.dat), the window means of p and
@@ -17,7 +17,7 @@ own entries (background fields, Young's modulus, ranks), and writes RUN/results/
 - bed.csv: the whole bed's frictional pressure drop (+- sem) against its buoyant weight, the mixing
   region, the window (window_s: from its first to its last dump), the wall time (wall_s: from the
   solver log's starts, pauses and stretches computed twice left out, as validation/muller/summary.py
-  counts it; -wall S, the summed wall_seconds.txt, only where there is no log), the case (background
+  counts it; the summed wall_seconds.txt only where there is no log), the case (background
   fields on/off, Young's modulus, MPI ranks), the stage costs (coupling share of the stage timers,
   DEM / fluid and coupling / fluid) and the commit(s) of commit.txt: so a copy of results/ is all
   validation/khan/compare.py needs;
@@ -94,8 +94,7 @@ read_dumps, read_fv, batch_sem, NB = _mono.read_dumps, _mono.read_fv, _mono.batc
 ref = _load(os.path.join(TOP, "validation", "khan", "references.py"), "khan_references")
 # the wall time and stage timers of a run from its solver log, as the Mueller validation reads them
 _summary = _load(os.path.join(TOP, "validation", "muller", "summary.py"), "muller_summary")
-run_wall, log_segments, stage_times, NOT_COUPLING = (_summary.run_wall, _summary.log_segments, _summary.stage_times,
-                                                     _summary.NOT_COUPLING)
+run_wall, stage_times, NOT_COUPLING = _summary.run_wall, _summary.stage_times, _summary.NOT_COUPLING
 
 NX = NY = 10
 NZ = 120
@@ -346,14 +345,15 @@ def sample_gaps(t):
     return [(float(t[i]), float(t[i + 1])) for i in np.nonzero(steps > 2 * usual)[0]]
 
 
-def stage_costs(log):
-    """(coupling share, DEM / fluid, coupling / fluid) from the solver's stage timers. Coupling:
+def stage_costs(segs):
+    """(coupling share, DEM / fluid, coupling / fluid) from the stage timers of the solver log's
+    segments (summary.log_segments, as run_wall returns them). Coupling:
     every stage of the last "Stage timers" line but DEM, fluid and fields; its share is over the sum
     of all stages. A continued run's log holds one start per (re)start, each timing from its own
     start: their last lines are summed (a -continue at the end time adds a start of no steps, whose
     line alone would be its set-up); pauses left out (summary.log_segments). nan without any line."""
     nan = float("nan")
-    stages = stage_times(log_segments(log)) if os.path.isfile(log) else None
+    stages = stage_times(segs)
     if not stages:
         return nan, nan, nan
     total = sum(stages.values())
@@ -404,8 +404,6 @@ def main():
         ap.add_argument("-" + k, required=True)
     for k in ("U", "tstart", "tend", "demdt"):
         ap.add_argument("-" + k, type=float, required=True)
-    ap.add_argument("-wall", type=float, default=float("nan"),
-                    help="wall seconds where the run has no solver log (Allrun: the summed wall_seconds.txt)")
     a = ap.parse_args()
     name = os.path.basename(os.path.normpath(a.run))
     res = os.path.join(a.run, "results")
@@ -431,9 +429,8 @@ def main():
         return 1
     window_s = win[-1][0] - win[0][0]
     background, young, ranks = case_entries(a.run)
-    log = os.path.join(a.run, "log.coarseDemFoam")
-    wall = run_wall(a.run)[0] if os.path.isfile(log) else a.wall
-    costs = stage_costs(log)
+    wall, _, _, segs, _ = run_wall(a.run)      # the log read once: wall time and stage timers
+    costs = stage_costs(segs)
     profs, heights = [], []                     # [dump][species][NZ], [dump][species]
     for t, c in win:
         sp = species_index(c["radius"])

@@ -222,7 +222,7 @@ def plot_error_vs_runtime(path, runs, plt):
         for sp, face in (("big", None), ("small", "none")):
             l = r["layers"][sp]
             err = abs(float(l["alpha_p_plateau"]) - float(l["alpha_p_richardson_zaki"]))
-            core = float(r["bed"]["wall_s"]) * int(r["bed"].get("ranks") or 1)
+            core = float(r["bed"]["wall_s"]) * int(r["bed"]["ranks"])
             for ax, x in ((axes[0], core), (axes[1], 100 * r["share"])):
                 ax.plot([x], [err], "o", ms=7, color=colour_of(r["method"]),
                         mfc=face if face else colour_of(r["method"]),
