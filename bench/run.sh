@@ -6,6 +6,9 @@
 cd "${0%/*}" || exit 1
 make -s || { echo "run.sh: build failed" >&2; exit 1; }
 mkdir -p results
+# the code's version before this run writes its own results (tracked files: they would read as -dirty)
+code_version=$(../etc/codeVersion bench src/core)
+started=$(date -u +%Y-%m-%dT%H:%M:%SZ)
 start=$(date +%s%N)
 ./build/kernel_bench -o results/kernels.csv "$@" | tee results/log.kernel_bench
 status=${PIPESTATUS[0]}
@@ -45,8 +48,8 @@ END {
 cat results/ratios.md
 
 {
-    echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-    echo "commit: $(../etc/codeVersion bench src/core)"
+    echo "date: $started (start)"
+    echo "commit: $code_version"
     echo "host: $(uname -m), $(nproc) cores, load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"
     echo "command: bench/run.sh $*"
     echo "elapsed (kernel_bench): $((ms / 1000)).$(printf %03d $((ms % 1000))) s"

@@ -46,6 +46,8 @@ case "$couplings" in ''|*[!0-9]*|0) echo "bench/coupled: -couplings needs a posi
 
 work="$here/work"; results="$here/results"
 mkdir -p "$work" "$results"
+# the code's version before this run writes its own results (tracked files: they would read as -dirty)
+code_version=$("$top/etc/codeVersion"); started=$(date -u '+%Y-%m-%d %H:%M UTC')
 log() { echo "bench/coupled: $*"; }
 # the case files of a method, made by the tutorial itself (no copy of its method table here)
 make_case() { # dir method
@@ -175,8 +177,8 @@ done
 python3 "$here/ratios.py" "$csv" > "$results/ratios.md" || exit 1
 {
     echo "command: bench/coupled/run.sh -couplings $couplings -methods \"$methods\" -np \"$nps\" -state $state_t"
-    echo "commit: $("$top/etc/codeVersion")"
-    echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
+    echo "commit: $code_version"
+    echo "date: $started (start) to $(date -u '+%H:%M UTC')"
     echo "machine: $(nproc) cores; load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"
 } > "$results/run_info.txt"
 cat "$results/ratios.md"
