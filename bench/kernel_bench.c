@@ -100,13 +100,6 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    FILE *csv = fopen(out, "w");
-    if (!csv) die(out, strerror(errno));
-    fprintf(csv, "n_particles,n_cells,method,n_timed,cells_per_kernel,reps,build_s_per_particle,"
-                 "locate_s_per_particle,alpha_s_per_particle,touch_s_per_particle,build_over_touch,"
-                 "alpha_over_touch,first_build_s_per_particle,first_locate_s_per_particle,first_build_over_touch,"
-                 "zero_cells_s,touch_check_rel_err\n");
-
     method_def methods[6];
     memset(methods, 0, sizeof methods);
     methods[0].name = "centre";
@@ -124,6 +117,31 @@ int main(int argc, char **argv)
     methods[5].cap = CAP_EXACT;
     for (int m = 0; m < 6; ++m)
         if (!methods[m].core) methods[m].core = methods[m].name;
+    if (only) { /* a method not in the list would time nothing and look like a finished run */
+        int known = 0;
+        for (int m = 0; m < 6; ++m) known |= !strcmp(only, methods[m].name);
+        if (!known) {
+            fprintf(stderr, "kernel_bench: -m %s: unknown method (known:", only);
+            for (int m = 0; m < 6; ++m) fprintf(stderr, " %s", methods[m].name);
+            fprintf(stderr, ")\n");
+            return 2;
+        }
+    }
+    for (const char *s = list; *s;) { /* every count checked before the CSV is overwritten */
+        char *end;
+        const double N = strtod(s, &end);
+        if (end == s || !(N >= 1 && N <= 1e8) || (*end && *end != ',')) {
+            fprintf(stderr, "kernel_bench: -n %s: particle counts 1..1e8 separated by commas\n", list);
+            return 2;
+        }
+        s = *end == ',' ? end + 1 : end;
+    }
+    FILE *csv = fopen(out, "w");
+    if (!csv) die(out, strerror(errno));
+    fprintf(csv, "n_particles,n_cells,method,n_timed,cells_per_kernel,reps,build_s_per_particle,"
+                 "locate_s_per_particle,alpha_s_per_particle,touch_s_per_particle,build_over_touch,"
+                 "alpha_over_touch,first_build_s_per_particle,first_locate_s_per_particle,first_build_over_touch,"
+                 "zero_cells_s,touch_check_rel_err\n");
 
     static const uint8_t walls[6] = {CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL,
                                      CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};

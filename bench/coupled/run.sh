@@ -26,6 +26,9 @@ top="$(cd "$here/../.." && pwd)"
 tut="$top/tutorials/fluidizedBedMuller"
 couplings=150; methods="centre divided bigParticle twoGrid gaussian diffusion"; nps="1 2"; state_t=0.4
 while [ $# -gt 0 ]; do
+    case "$1" in -couplings|-methods|-np|-state)
+        [ $# -ge 2 ] || { echo "bench/coupled: $1 needs a value (see -h)" >&2; exit 2; } ;;
+    esac
     case "$1" in
         -couplings) couplings="$2"; shift 2 ;;
         -methods) methods="$2"; shift 2 ;;
@@ -43,6 +46,8 @@ for np in $nps; do
     case "$np" in 1|2) ;; *) echo "bench/coupled: np $np: the Mueller case splits in 1 or 2 parts only (decomposeParDict (1 2 1))" >&2; exit 2 ;; esac
 done
 case "$couplings" in ''|*[!0-9]*|0) echo "bench/coupled: -couplings needs a positive number" >&2; exit 2 ;; esac
+python3 -c "import sys; t = float(sys.argv[1]); sys.exit(0 if t > 0 else 1)" "$state_t" 2> /dev/null ||
+    { echo "bench/coupled: -state $state_t: needs a time in s after the start, > 0" >&2; exit 2; }
 
 work="$here/work"; results="$here/results"
 mkdir -p "$work" "$results"

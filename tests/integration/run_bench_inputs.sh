@@ -1,0 +1,49 @@
+#!/bin/bash
+# Bad input to the benchmarks (issue 17): a method, rank count, size or option a benchmark cannot run
+# stops it at once with exit status 2 and a message naming what was asked, before anything is
+# measured or any result file is overwritten. Nothing here is timed. Prints "N passed, N failed".
+here="$(cd "$(dirname "$0")" && pwd)"
+top="$(cd "$here/../.." && pwd)"
+. "$here/result.sh"
+work=$(mktemp -d /tmp/coarsedem-benchin.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+
+# refused NAME 'expected message' command...: exit status 2 and the message on stderr
+refused() {
+    local name="$1" expect="$2"; shift 2
+    "$@" > "$work/out" 2> "$work/err"
+    local rc=$?
+    if [ $rc -eq 2 ] && grep -qF -- "$expect" "$work/err"; then
+        result ok "bench input '$name' refused (exit 2): $expect"
+    else
+        result fail "bench input '$name' (exit $rc) not refused with: $expect"
+        sed 's/^/    /' "$work/err" | head -5
+    fi
+}
+
+coupled="$top/bench/coupled/run.sh"
+refused coupled-method "unknown method 'pcm'" "$coupled" -methods "centre pcm"
+refused coupled-np "np 3: the Mueller case splits in 1 or 2 parts only" "$coupled" -np "1 3"
+refused coupled-couplings "-couplings needs a positive number" "$coupled" -couplings 0
+refused coupled-novalue "-np needs a value" "$coupled" -np
+refused coupled-state "-state -0.4: needs a time in s after the start" "$coupled" -state -0.4
+refused coupled-option "unknown option '-model'" "$coupled" -model centre
+
+make -s -C "$top/bench" > "$work/make.log" 2>&1 || { result fail "bench: kernel_bench does not build"; cat "$work/make.log"; finish; }
+kb="$top/bench/build/kernel_bench"
+echo "kept" > "$work/kernels.csv"
+refused kernel-method "-m bigParticle: unknown method (known: centre divided bigParticle_n5" "$kb" -n 1000 -m bigParticle -o "$work/kernels.csv"
+refused kernel-count "-n 1000,0: particle counts 1..1e8" "$kb" -n 1000,0 -o "$work/kernels.csv"
+refused kernel-option "usage:" "$kb" -x
+if [ "$(cat "$work/kernels.csv")" = kept ]; then
+    result ok "kernel_bench refused before overwriting its CSV"
+else
+    result fail "kernel_bench overwrote its CSV on bad input"
+fi
+# the accepted spelling runs (one small size, one method): the refusals above are not of everything
+if "$kb" -n 1000 -m centre -o "$work/kernels.csv" > "$work/out" 2>&1 && [ "$(wc -l < "$work/kernels.csv")" -eq 2 ]; then
+    result ok "kernel_bench -n 1000 -m centre runs and writes one row"
+else
+    result fail "kernel_bench -n 1000 -m centre"; sed 's/^/    /' "$work/out" | tail -5
+fi
+finish
