@@ -7,7 +7,7 @@ window.py on a synthetic run (errors per averaging window against ones computed 
 etc/runArchive (a stopped run packed and unpacked to continue elsewhere), and the binary bed's
 scripts (pressure samples of every start, runs of one case, the wall-corrected reference).
 Prints PASS/FAIL per check and "N passed, N failed"."""
-import csv, importlib.util, math, os, random, re, subprocess, sys, tempfile, time
+import csv, importlib.util, math, os, random, re, shutil, subprocess, sys, tempfile, time
 
 top = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 def load(name):
@@ -426,6 +426,54 @@ with tempfile.TemporaryDirectory() as tmp:
         refused = str(e)
     check("bed.csv has no coupling_share" in refused and "-post again" in refused,
           "binary bed compare.py refuses a bed.csv without the stage costs, saying to post-process again: %r" % refused[-120:])
+
+    # stiffness.py: a run against a stiffer one of the same case; copies of a kept run with edited values
+    khan_stiff = load_path("validation/khan/stiffness.py", "khan_stiffness")
+    kept = os.path.join(top, "validation/khan/results/runs/bigParticle_U0.015_short_np2_E1e5")
+
+    def read_rows(path):
+        with open(path) as f:
+            return list(csv.DictReader(f))
+
+    def write_rows(path, rows):
+        with open(path, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0]), lineterminator="\n")
+            w.writeheader()
+            w.writerows(rows)
+
+    def edited_run(name, young, big_plateau_shift=0.0, dp_shift=0.0, method=None):
+        d = os.path.join(tmp, "stiff", name)
+        shutil.copytree(kept, d)
+        bed = read_rows(os.path.join(d, "results", "bed.csv"))
+        bed[0]["young_pa"] = young
+        bed[0]["dp_pa"] = "%.6f" % (float(bed[0]["dp_pa"]) + dp_shift)
+        if method:
+            bed[0]["method"] = method
+        write_rows(os.path.join(d, "results", "bed.csv"), bed)
+        layers = read_rows(os.path.join(d, "results", "layers.csv"))
+        for r in layers:
+            if r["species"] == "big":
+                r["alpha_p_plateau"] = "%.6f" % (float(r["alpha_p_plateau"]) + big_plateau_shift)
+        write_rows(os.path.join(d, "results", "layers.csv"), layers)
+        return khan_compare.read_run(d)
+    soft = edited_run("soft", "100000")
+    rows = khan_stiff.compare_runs(soft, edited_run("near", "1000000", big_plateau_shift=0.008, dp_shift=1.0))
+    check(all(ok for _, ok in rows),
+          "binary bed stiffness.py: plateau 0.008 and dp 1.0 Pa apart (within 0.01 and 1 % of the weight) agree")
+    rows = khan_stiff.compare_runs(soft, edited_run("far", "1000000", big_plateau_shift=0.015, dp_shift=3.0))
+    verdicts = dict((r.split("|")[1].strip(), ok) for r, ok in rows)
+    check(not verdicts["big plateau alpha_p"] and not verdicts["frictional pressure drop"] and
+          verdicts["small plateau alpha_p"] and verdicts["mixing region"],
+          "binary bed stiffness.py: plateau 0.015 (5 sem) and dp 3.0 Pa (3.3 sem, 2.5 %% of the weight) apart "
+          "differ, the unchanged quantities agree: %s" % verdicts)
+    for args, want in (((soft, edited_run("other", "1000000", method="divided")), "method (bigParticle against divided)"),
+                       ((soft, edited_run("same", "100000")), "is not softer than")):
+        try:
+            khan_stiff.refuse_unless_comparable(*args)
+            refused = ""
+        except SystemExit as e:
+            refused = str(e)
+        check(want in refused, "binary bed stiffness.py refuses: %r" % refused[-110:])
 
     # references: Richardson-Zaki with the tube's wall correction of u_t, computed here independently
     u_t = khan_ref.terminal_velocity(1e-3)[0]
