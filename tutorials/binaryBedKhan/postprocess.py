@@ -375,9 +375,9 @@ def commit_of(run):
 
 
 def case_entries(run):
-    """(background fields on/off, Young's modulus in Pa, MPI ranks) of the run's own case files:
-    couplingProperties' backgroundFields, DEM/in.liggghts' youngsModulus, decomposeParDict's
-    numberOfSubdomains (1 without one)."""
+    """(background fields on/off, Young's modulus in Pa, MPI ranks, neighbour-list style) of the run's
+    own case files: couplingProperties' backgroundFields, DEM/in.liggghts' youngsModulus and
+    `neighbor` style, decomposeParDict's numberOfSubdomains (1 without one)."""
     def find(rel, pattern, default):
         path = os.path.join(run, rel)
         if not os.path.isfile(path):
@@ -387,7 +387,8 @@ def case_entries(run):
     background = find(os.path.join("constant", "couplingProperties"), r"^\s*backgroundFields\s+(\w+)\s*;", "off")
     young = float(find(os.path.join("DEM", "in.liggghts"), r"youngsModulus\s+peratomtype\s+([0-9.eE+-]+)", "nan"))
     ranks = int(find(os.path.join("system", "decomposeParDict"), r"numberOfSubdomains\s+(\d+)\s*;", "1"))
-    return ("on" if background in ("on", "true", "yes") else "off"), young, ranks
+    neighbour = find(os.path.join("DEM", "in.liggghts"), r"^\s*neighbor\s+\S+\s+(\w+)", "unknown")
+    return ("on" if background in ("on", "true", "yes") else "off"), young, ranks, neighbour
 
 
 def write_csv(path, header, rows, fmt):
@@ -428,7 +429,7 @@ def main():
               "continue it first (Allrun ... -continue)" % (name, win[-1][0], a.tend))
         return 1
     window_s = win[-1][0] - win[0][0]
-    background, young, ranks = case_entries(a.run)
+    background, young, ranks, neighbour = case_entries(a.run)
     wall, _, _, segs, _ = run_wall(a.run)      # the log read once: wall time and stage timers
     costs = stage_costs(segs)
     profs, heights = [], []                     # [dump][species][NZ], [dump][species]
@@ -455,10 +456,14 @@ def main():
     overlaps = [pair_overlap(win[i][1]) for i in sorted({0, len(win) // 2, len(win) - 1})]
     worst_overlap, worst_pairs = max(o[0] for o in overlaps), max(o[1] for o in overlaps)
     if worst_overlap > 0.10:
+        # the cause the run's own DEM script points to: multi-level lists that find no contacts, or
+        # contacts too soft for the bed's collisions
+        cause = ("contacts are missed: DEM/in.liggghts uses 'neighbor ... multi', a stub in LIGGGHTS 3.8.0 "
+                 "(use bin)" if neighbour == "multi" else
+                 "the contacts (E = %g Pa, neighbour lists '%s') are too soft for the bed's collisions: "
+                 "a stiffer -young, or a calmer bed" % (young, neighbour))
         warnings.append("particles overlap by up to %.0f %% of the smaller diameter (%d pairs above 5 %%) in the "
-                        "window: contacts are missed (LIGGGHTS neighbour lists: 'neighbor ... multi' is a stub in "
-                        "LIGGGHTS 3.8.0) or the contact stiffness is too low for the loads"
-                        % (100 * worst_overlap, worst_pairs))
+                        "window: %s" % (100 * worst_overlap, worst_pairs, cause))
 
     # pressure: the inlet series, the window means of p and alphaP
     t_dp, dp = frictional_dp(a.run)
