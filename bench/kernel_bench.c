@@ -127,13 +127,18 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    for (const char *s = list; *s;) { /* every count checked before the CSV is overwritten */
+    /* -n, parsed and checked once, before the CSV is overwritten: at most one count per comma + 1 */
+    int n_counts = 0;
+    long *counts = malloc(sizeof(long) * (strlen(list) / 2 + 1));
+    if (!counts) die("allocation", "out of memory");
+    for (const char *s = list; *s;) {
         char *end;
         const double N = strtod(s, &end);
         if (end == s || !(N >= 1 && N <= 1e8) || (*end && *end != ',')) {
             fprintf(stderr, "kernel_bench: -n %s: particle counts 1..1e8 separated by commas\n", list);
             return 2;
         }
+        counts[n_counts++] = (long)N;
         s = *end == ',' ? end + 1 : end;
     }
     FILE *csv = fopen(out, "w");
@@ -150,12 +155,8 @@ int main(int argc, char **argv)
            "cells/k", "reps", "build s/p", "alpha s/p", "touch s/p", "build/tch", "alpha/tch", "locate%",
            "first/tch", "locate%");
 
-    for (const char *s = list; *s;) {
-        char *end;
-        const long N = (long)strtod(s, &end);
-        if (end == s || N <= 0 || N > 100000000L) die("-n", "bad particle count");
-        s = *end == ',' ? end + 1 : end;
-
+    for (int k = 0; k < n_counts; ++k) {
+        const long N = counts[k];
         const int n = (int)lround(cbrt(N * (PI / 6.0) / 0.3));
         const double L = n * D;
         box_mesh b;
@@ -264,6 +265,7 @@ int main(int argc, char **argv)
         box_mesh_destroy(&b);
     }
     fclose(csv);
+    free(counts);
     printf("total %.1f s; results in %s\n", program_seconds() - t_all, out);
     return 0;
 }
