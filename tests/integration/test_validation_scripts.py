@@ -431,9 +431,7 @@ with tempfile.TemporaryDirectory() as tmp:
     khan_stiff = load_path("validation/khan/stiffness.py", "khan_stiffness")
     kept = os.path.join(top, "validation/khan/results/runs/bigParticle_U0.015_short_np2_E1e5")
 
-    def read_rows(path):
-        with open(path) as f:
-            return list(csv.DictReader(f))
+    read_rows = khan_compare.read_csv
 
     def write_rows(path, rows):
         with open(path, "w", newline="") as f:
