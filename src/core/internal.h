@@ -123,6 +123,10 @@ cdc_status cdc_fail(cdc_context *ctx, cdc_status st, const char *fmt, ...);
 /* Is p inside convex cell c (with a tolerance relative to the cell size)? */
 int cdc_point_in_cell(const cdc_context *ctx, int32_t c, const double p[3]);
 
+/* The face of cell c whose plane p lies furthest beyond (by more than the cell's tolerance), or -1
+ * when p is inside c: the face a straight path from inside c to p leaves c through. */
+int32_t cdc_exit_face(const cdc_context *ctx, int32_t c, const double p[3]);
+
 /* New visit generation for the stamp array (wraps safely). */
 int32_t cdc_next_stamp(cdc_context *ctx);
 

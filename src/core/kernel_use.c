@@ -10,7 +10,9 @@
 
 /* How far along the unit direction e the particle reaches beyond the mesh, as a fraction of r
  * (0 if the end x + r e is in a cell): the boundary is bracketed between the centre (inside) and
- * the end (outside) and found by bisection. */
+ * the end (outside) and found by bisection. On one rank of a decomposed mesh a particle near the
+ * processor boundary reaches into the neighbour's cells, not out of the domain: a path that leaves
+ * through a processor face counts 0 (what lies beyond it is the neighbour rank's mesh). */
 static cdc_status reach_beyond(cdc_context *ctx, const double x[3], double r, const double e[3], int32_t host,
                                double *fraction)
 {
@@ -26,6 +28,17 @@ static cdc_status reach_beyond(cdc_context *ctx, const double x[3], double r, co
         st = cdc_locate_point(ctx, y, host, &c);
         if (st != CDC_OK) return st;
         if (c >= 0) in = mid; else out = mid;
+    }
+    /* the face the path leaves the last inside cell through, seen from the first outside point */
+    for (int d = 0; d < 3; ++d) y[d] = x[d] + in * r * e[d];
+    st = cdc_locate_point(ctx, y, host, &c);
+    if (st != CDC_OK) return st;
+    if (c >= 0) {
+        const cdc_mesh *m = ctx->mesh;
+        for (int d = 0; d < 3; ++d) y[d] = x[d] + out * r * e[d];
+        const int32_t f = cdc_exit_face(ctx, c, y);
+        if (f >= m->n_internal_faces && m->boundary_face_kind[f - m->n_internal_faces] == CDC_FACE_PROCESSOR)
+            return CDC_OK;
     }
     *fraction = 1.0 - in;
     return CDC_OK;

@@ -39,23 +39,28 @@ int cdc_point_in_cell(const cdc_context *ctx, int32_t c, const double p[3])
     return 1;
 }
 
+int32_t cdc_exit_face(const cdc_context *ctx, int32_t c, const double p[3])
+{
+    int32_t best_f = -1;
+    double best = cell_tolerance(ctx, c);
+    for (int32_t q = ctx->cell_face_offsets[c]; q < ctx->cell_face_offsets[c + 1]; ++q) {
+        const int32_t f = ctx->cell_faces[q];
+        const double s = beyond(ctx, c, f, p);
+        if (s > best) {
+            best = s;
+            best_f = f;
+        }
+    }
+    return best_f;
+}
+
 /* Walk from `start`; returns the host cell, or -1 when the walk cannot decide. */
 static int32_t walk(const cdc_context *ctx, int32_t start, const double p[3])
 {
     const cdc_mesh *m = ctx->mesh;
     int32_t c = start, prev = -1;
     for (int32_t step = 0; step < ctx->walk_max_steps; ++step) {
-        const double tol = cell_tolerance(ctx, c);
-        int32_t best_f = -1;
-        double best = tol;
-        for (int32_t q = ctx->cell_face_offsets[c]; q < ctx->cell_face_offsets[c + 1]; ++q) {
-            const int32_t f = ctx->cell_faces[q];
-            const double s = beyond(ctx, c, f, p);
-            if (s > best) {
-                best = s;
-                best_f = f;
-            }
-        }
+        const int32_t best_f = cdc_exit_face(ctx, c, p);
         if (best_f < 0) return c;
         /* Beyond a boundary face: outside if the domain is convex; the bins decide otherwise. */
         if (best_f >= m->n_internal_faces) return -1;

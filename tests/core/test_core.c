@@ -1528,6 +1528,37 @@ static void test_partly_outside(void)
     cube_case_close(&t);
 }
 
+/* on one rank's half of a box (processor face at x = 0.04): a particle reaching across the processor
+ * face reaches into the neighbour's cells and is not counted; one reaching through a wall is */
+static void test_partly_outside_processor(void)
+{
+    const double lo[3] = {0, 0, 0}, hi[3] = {0.04, 0.04, 0.04};
+    const uint8_t kinds[6] = {CDC_FACE_WALL, CDC_FACE_PROCESSOR, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};
+    box_mesh b;
+    cdc_context *ctx = NULL;
+    CHECK(box_mesh_create(&b, 4, 4, 4, lo, hi, kinds, 0.0) == 0, "mesh");
+    CHECK(cdc_context_create(&b.mesh, &ctx) == CDC_OK, "context: %s", cdc_create_error());
+    if (!ctx) return;
+    /* 7: 3 mm across the processor face only; 8: across it and 1 mm through the wall y = 0.04 */
+    const double x[6] = {0.039, 0.02, 0.02,   0.039, 0.039, 0.02};
+    const double r[2] = {0.004, 0.002};
+    const int64_t ids[2] = {7, 8};
+    cdc_particles p = {2, x, r, ids, NULL};
+    cdc_kernels *k = NULL;
+    CHECK(cdc_kernels_create(ctx, "centre", NULL, &k) == CDC_OK, "create: %s", cdc_last_error(ctx));
+    CHECK(cdc_kernels_build(k, &p) == CDC_OK, "build: %s", cdc_last_error(ctx));
+    int32_t n = -1;
+    double depth = -1;
+    int64_t id = -2;
+    CHECK(cdc_kernels_partly_outside(k, &p, &n, &depth, &id) == CDC_OK, "%s", cdc_last_error(ctx));
+    CHECK(n == 1, "count %d (expected 1: the processor face is not the mesh's edge)", (int)n);
+    CHECK(fabs(depth - 0.5) <= 2e-6 && id == 8, "deepest %.7f of a radius, particle %lld (expected 0.5, 8)", depth,
+          (long long)id);
+    cdc_kernels_destroy(k);
+    cdc_context_destroy(ctx);
+    box_mesh_destroy(&b);
+}
+
 /* ------------------------------------------------------------------ candidate lists */
 
 static int cmp_i32(const void *a, const void *b)
@@ -1637,6 +1668,7 @@ int main(void)
     run("parallel_matches_serial", test_parallel_matches_serial);
     run("bad_input", test_bad_input);
     run("partly_outside", test_partly_outside);
+    run("partly_outside_processor", test_partly_outside_processor);
     run("candidates_box", test_candidates_box);
     run("candidates_sheared", test_candidates_sheared);
     run("method_registry", test_method_registry);
