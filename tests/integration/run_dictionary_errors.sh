@@ -197,5 +197,24 @@ else
     echo "PASS: serial run ends without the 'Finalizing MPI' warning"; pass=$((pass+1))
 fi
 
+# on 2 ranks every rank's error names the file: the other ranks get couplingProperties from the
+# master as a stream, and their copy was named "IOstream" in their messages
+c="$work/misspelt_props_np2"
+cp -r "$base" "$c"
+sed -i 's/bigParticleProps /bigparticleProps /' "$c/constant/couplingProperties"
+(cd "$c" && decomposePar > log.decomposePar 2>&1 &&
+ timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 coarseDemFoam -parallel > log 2>&1)
+rc=$?
+n0=$(grep -c "^\[0\] unknown dictionary bigparticleProps in .*constant/couplingProperties" "$c/log")
+n1=$(grep -c "^\[1\] unknown dictionary bigparticleProps in .*constant/couplingProperties" "$c/log")
+if [ $rc -ne 0 ] && [ "$n0" -ge 1 ] && [ "$n1" -ge 1 ] && ! grep -q IOstream "$c/log"; then
+    echo "PASS: dictionary error on 2 ranks: both ranks name constant/couplingProperties"; pass=$((pass+1))
+else
+    echo "FAIL: dictionary error on 2 ranks (exit $rc): rank 0 named the file $n0 times, rank 1 $n1 times" \
+         "($(grep -c IOstream "$c/log") lines name IOstream)"
+    grep "unknown dictionary" "$c/log" | head -4 | sed 's/^/    /'
+    fail=$((fail+1))
+fi
+
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
