@@ -11,7 +11,8 @@
 #   - bad input is reported by name and time: the run's data again with n = 1.5 (the small
 #     species' kernel within its host cell) and with small particles moved into the top cell layer;
 #     a run stopped before its window's end (its last dumps removed) is refused with the time;
-#   - -continue continues with the run's own case files and refuses, naming the file, with a changed one.
+#   - -continue continues with the run's own case files and refuses, naming the file, with a changed one
+#     (also the one -alphaRelax changes); -alphaRelax with a non-positive time is refused.
 #   run_binary_bed_demo.sh [-method M] [-U U]          (default bigParticle, 0.015)
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
@@ -140,4 +141,18 @@ else
     result fail "$tag: -continue with a changed case file did not refuse naming it (see $log.refused)"
 fi
 cp "$log.dem" "$run/DEM/in.liggghts"
+# -alphaRelax writes alphaRelaxationTime into the case's couplingProperties: the same run continued
+# with it refuses, naming that file; a non-positive time is refused before anything is made
+if ! "$case_dir/Allrun" -mode demo -method "$method" -U "$U" -name "$name" -alphaRelax 0.003 -continue > "$log.relax" 2>&1 &&
+   grep -q "constant/couplingProperties" "$log.relax" && grep -q "cannot continue" "$log.relax"; then
+    result ok "$tag: -alphaRelax 0.003 changes the case's couplingProperties (-continue refuses, naming it)"
+else
+    result fail "$tag: -continue -alphaRelax 0.003 did not refuse naming constant/couplingProperties (see $log.relax)"
+fi
+if ! "$case_dir/Allrun" -mode demo -method "$method" -alphaRelax -1 > "$log.relaxbad" 2>&1 &&
+   grep -q "alphaRelax must be a time" "$log.relaxbad"; then
+    result ok "$tag: -alphaRelax -1 is refused"
+else
+    result fail "$tag: -alphaRelax -1 was not refused (see $log.relaxbad)"
+fi
 finish
