@@ -387,6 +387,18 @@ with tempfile.TemporaryDirectory() as tmp:
           "from 0.51 s, its cut last line left out (%d samples to %g s, values %s)" % (len(t), t[-1], sorted(set(p.round(6)))))
     gaps = khan_post.sample_gaps([0.1, 0.2, 0.3, 0.6, 0.7, 0.8])
     check(gaps == [(0.3, 0.6)], "binary bed pressure: a gap in the samples is found (%s)" % gaps)
+    # a dense layer with a long dilute tail (sizeAwareDiffusion's big species at 0.015 m/s): its 5-95 %
+    # interior ends in the tail, below half the plateau; the top lies where the dense part ends (the
+    # walk from the interior's last cell extrapolated to -12.2 mm)
+    zc = khan_post.np.arange(120) * 1.0 + 0.5
+    core = [0.497, 0.575, 0.629, 0.581, 0.600, 0.571, 0.572, 0.465, 0.340, 0.190, 0.110]
+    tail = [0.092, 0.086, 0.084, 0.081, 0.079, 0.071, 0.064, 0.056, 0.046, 0.040, 0.035, 0.031, 0.028, 0.024, 0.019, 0.013]
+    prof = khan_post.np.array(core + tail + [0.0] * (120 - len(core) - len(tail)))
+    lay = khan_post.layer(zc, prof, [prof] * khan_post.NB)
+    check(9.5 < lay["top"] < 10.5 and lay["bottom"] == 0.0,
+          "binary bed layer of a dense core with a dilute tail: top %.2f mm (expected between 9.5 and 10.5, where "
+          "the core falls below half the plateau %.3f), bottom %.2f mm (expected 0: the distributor)"
+          % (lay["top"], 0.5 * lay["plateau"], lay["bottom"]))
     bad = os.path.join(tmp, "bad.dat")
     open(bad, "w").write("0.1 1\n0.2 x\n0.3 1\n")
     try:

@@ -166,8 +166,12 @@ def layer(z, prof, batch_profiles):
     per_batch = [float(b[inner].mean()) for b in batch_profiles]
     sem = float(np.std(per_batch, ddof=1) / math.sqrt(NB)) if len(per_batch) == NB else float("nan")
     idx = np.nonzero(inner)[0]
-    top = crossing(z, prof, int(idx[-1]), 0.5 * plateau, +1)
-    bottom = crossing(z, prof, int(idx[0]), 0.5 * plateau, -1)
+    # the edges are walked to from the interior's densest cell: an edge cell of the interior may lie
+    # below half the plateau itself (a dense layer with a long dilute tail inside the other species,
+    # whose 5-95 % span is then mostly tail), and a walk from it would extrapolate past the cell
+    densest = int(idx[np.argmax(prof[idx])])
+    top = crossing(z, prof, densest, 0.5 * plateau, +1)
+    bottom = crossing(z, prof, densest, 0.5 * plateau, -1)
     return dict(plateau=plateau, sem=sem, inner=inner, interior_lo=float(z[idx[0]] - 0.5 * DX),
                 interior_hi=float(z[idx[-1]] + 0.5 * DX), top=top, bottom=bottom)
 
