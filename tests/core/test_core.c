@@ -1538,7 +1538,10 @@ static void test_partly_outside_processor(void)
     cdc_context *ctx = NULL;
     CHECK(box_mesh_create(&b, 4, 4, 4, lo, hi, kinds, 0.0) == 0, "mesh");
     CHECK(cdc_context_create(&b.mesh, &ctx) == CDC_OK, "context: %s", cdc_create_error());
-    if (!ctx) return;
+    if (!ctx) {
+        box_mesh_destroy(&b);
+        return;
+    }
     /* 7: 3 mm across the processor face only; 8: across it and 1 mm through the wall y = 0.04 */
     const double x[6] = {0.039, 0.02, 0.02,   0.039, 0.039, 0.02};
     const double r[2] = {0.004, 0.002};

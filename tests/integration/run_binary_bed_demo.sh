@@ -12,7 +12,8 @@
 #     species' kernel within its host cell) and with small particles moved into the top cell layer;
 #     a run stopped before its window's end (its last dumps removed) is refused with the time;
 #   - -continue continues with the run's own case files and refuses, naming the file, with a changed one
-#     (also the one -alphaRelax changes); -alphaRelax with a non-positive time is refused.
+#     (also the one -alphaRelax changes); -alphaRelax writes one entry with its value, and a
+#     non-positive or malformed time is refused before a run is made.
 #   run_binary_bed_demo.sh [-method M] [-U U]          (default bigParticle, 0.015)
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
@@ -149,10 +150,27 @@ if ! "$case_dir/Allrun" -mode demo -method "$method" -U "$U" -name "$name" -alph
 else
     result fail "$tag: -continue -alphaRelax 0.003 did not refuse naming constant/couplingProperties (see $log.relax)"
 fi
-if ! "$case_dir/Allrun" -mode demo -method "$method" -alphaRelax -1 > "$log.relaxbad" 2>&1 &&
-   grep -q "alphaRelax must be a time" "$log.relaxbad"; then
-    result ok "$tag: -alphaRelax -1 is refused"
+# the entry it writes: exactly one alphaRelaxationTime, the value given (the case made by Allrun's own
+# make_case into a scratch directory)
+mk=$(mktemp -d /tmp/coarsedem-khan-relax.XXXXXX)
+( cd "$case_dir" && source <(sed -n '/^make_case()/,/^}/p' Allrun) && liquid=../liquidFluidizedBed &&
+  method=$method U=$U mode=demo background=off np=1 alphaRelax=0.003 young=1e5 demdt=1e-5 interval=100 \
+  dump=0.02 wi=0.5 tstart=0.6 tend=1.0 && make_case "$mk" ) > /dev/null 2>&1
+entries=$(grep -c "^alphaRelaxationTime " "$mk/constant/couplingProperties" 2>/dev/null)
+value=$(sed -n 's/^alphaRelaxationTime  *\([^;]*\);.*/\1/p' "$mk/constant/couplingProperties" 2>/dev/null)
+rm -rf "$mk"
+if [ "$entries" = 1 ] && [ "$value" = 0.003 ]; then
+    result ok "$tag: -alphaRelax 0.003 writes one entry alphaRelaxationTime 0.003"
 else
-    result fail "$tag: -alphaRelax -1 was not refused (see $log.relaxbad)"
+    result fail "$tag: -alphaRelax 0.003 wrote ${entries:-no} alphaRelaxationTime entries, value '${value}'"
 fi
+for bad in 0 -1 ' 0.003' 0.00_3; do
+    if ! "$case_dir/Allrun" -mode demo -method "$method" -name alltest_relax_refused -alphaRelax "$bad" > "$log.relaxbad" 2>&1 &&
+       grep -q "alphaRelax must be a time" "$log.relaxbad" && [ ! -d "$case_dir/runs/alltest_relax_refused" ]; then
+        result ok "$tag: -alphaRelax '$bad' is refused before a run is made"
+    else
+        result fail "$tag: -alphaRelax '$bad' was not refused (see $log.relaxbad)"
+        rm -rf "$case_dir/runs/alltest_relax_refused"
+    fi
+done
 finish

@@ -43,8 +43,9 @@ Definitions (independent of the void-fraction method: particles binned by the ce
 - A species' layer: from its time-mean profile, the heights z05 and z95 below which 5 % and 95 % of
   its volume lie; the interior is the central 60 % of z05..z95 (the layers of cells whose centres lie
   there). plateau = the mean alpha_p,s over the interior; its sem from the same interior mean per
-  batch. top (bottom) = the height above (below) the interior where alpha_p,s falls below half the
-  plateau, linear between cell centres (the distributor, 0, when it never does below).
+  batch. top (bottom) = walking up (down) from the interior's densest cell, the first height where
+  alpha_p,s falls below half the plateau, linear between cell centres (the distributor, 0, when it
+  never does below; a dense layer with a long dilute tail has its top inside the interior).
 - mean height: the volume-weighted mean centre height of the species per dump, time mean (+- sem);
   its drift: the mean over the window's second half minus that over its first half (a layer still
   settling or expanding drifts by more than its sem).

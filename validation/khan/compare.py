@@ -3,7 +3,7 @@
 
     compare.py OUT RUN [RUN ...]
 
-RUN: a run directory of tutorials/binaryBedKhan (runs/<method>_U<U>_<mode>[_background][_np<N>][_E<E>]/)
+RUN: a run directory of tutorials/binaryBedKhan (runs/<method>_U<U>_<mode>[_background][_np<N>][_E<E>][_relax<TAU>]/)
 that postprocess.py has processed (its results/bed.csv, layers.csv, profiles.csv, messages.txt; the
 case, the stage costs and the commit are bed.csv's columns, so a copy of results/ alone will do, as
 validation/khan/results/runs/ keeps them). The

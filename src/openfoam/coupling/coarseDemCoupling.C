@@ -19,13 +19,15 @@ static IOobject couplingDictIO(const fvMesh& mesh)
 
 // In a parallel run the master reads couplingProperties and streams it to the other ranks, whose copy
 // is then named after the stream ("IOstream"): every error raised on those ranks would name no file.
-// Names the dictionary and its sub-dictionaries after the master's file on every rank.
+// Names the dictionary, its entries (a bad value's error names its entry) and its sub-dictionaries
+// after the master's file on every rank, as OpenFOAM names them when it reads the file.
 static void nameAfterFile(dictionary& dict, const fileName& name)
 {
     dict.name() = name;
     for (entry& e : dict)
     {
-        if (e.isDict()) nameAfterFile(e.dict(), name + '.' + e.keyword());
+        e.name() = name + '.' + e.keyword();
+        if (e.isDict()) nameAfterFile(e.dict(), e.name());
     }
 }
 
