@@ -17,30 +17,12 @@ static IOobject couplingDictIO(const fvMesh& mesh)
     return IOobject("couplingProperties", mesh.time().constant(), mesh, IOobject::MUST_READ, IOobject::NO_WRITE);
 }
 
-// In a parallel run the master reads couplingProperties and streams it to the other ranks, whose copy
-// is then named after the stream ("IOstream"): every error raised on those ranks would name no file.
-// Names the dictionary, its entries (a bad value's error names its entry) and its sub-dictionaries
-// after the master's file on every rank, as OpenFOAM names them when it reads the file.
-static void nameAfterFile(dictionary& dict, const fileName& name)
-{
-    dict.name() = name;
-    for (entry& e : dict)
-    {
-        e.name() = name + '.' + e.keyword();
-        if (e.isDict()) nameAfterFile(e.dict(), e.name());
-    }
-}
-
 // The sub-dictionaries of couplingProperties are the <model>Props of the models. One whose name
 // matches no model (a misspelt name) would be ignored and its model would run with the defaults:
-// refuse it, naming the dictionaries that are read. Returns its argument, so that the check (and the
-// naming after the file) runs before the first model reads its dictionary.
-static const dictionary& checkPropsDictionaries(IOdictionary& io)
+// refuse it, naming the dictionaries that are read. Returns its argument, so that the check runs
+// before the first model reads its dictionary.
+static const dictionary& checkPropsDictionaries(const dictionary& dict)
 {
-    dictionary& dict = io; // IOdictionary's own name() is the object's ("couplingProperties")
-    fileName path = dict.name(); // the master's: the file it read
-    Pstream::scatter(path);
-    nameAfterFile(dict, path);
     wordHashSet known{"backgroundFieldsProps", "diffusionProps", "sizeAwareDiffusionProps", "openSystem"};
     for (int i = 0; i < cdc_method_count(); ++i) known.insert(word(cdc_method_name(i)) + "Props");
     for (const word& f : forceModel::dictionaryConstructorTablePtr_->sortedToc()) known.insert(f + "Props");
