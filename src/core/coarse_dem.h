@@ -182,9 +182,9 @@ int32_t cdc_kernels_outside(const cdc_kernels *k, const int64_t **ids);
  * mesh but that reach partly outside it: an end of one of their three axes, x +- r e_d, lies in no
  * cell and the axis leaves the mesh through a wall or other boundary face (through a processor face
  * it reaches into the neighbour rank's cells: not counted, on either rank, even when it leaves the
- * mesh beyond them, e.g. through a wall close to the processor boundary). *count gets their number, *depth the deepest such end beyond the mesh as a fraction of its
- * particle's radius (found by bisection along the axis, to 1e-6; 0 when none), *id the id of that
- * particle (-1 when none). A particle pressed into a DEM wall reaches beyond it by its contact
+ * mesh beyond them, e.g. through a wall close to the processor boundary). *count gets their number,
+ * *depth the deepest such end beyond the mesh as a fraction of its particle's radius (found by
+ * bisection along the axis, to 1e-6; 0 when none), *id the id of that particle (-1 when none). A particle pressed into a DEM wall reaches beyond it by its contact
  * overlap, so small depths are normal; a large one is a particle leaving the mesh. Six point
  * locations per particle: for reports at write times, not for every coupling. */
 cdc_status cdc_kernels_partly_outside(const cdc_kernels *k, const cdc_particles *p, int32_t *count,

@@ -22,24 +22,25 @@ static cdc_status reach_beyond(cdc_context *ctx, const double x[3], double r, co
     *fraction = 0.0;
     if (st != CDC_OK || c >= 0) return st;
     double in = 0.0, out = 1.0; /* along the axis, in radii */
+    int32_t last_in = host;     /* the cell of the point at `in` (the centre's host to start with) */
     while (out - in > 1e-6) {
         const double mid = 0.5 * (in + out);
         for (int d = 0; d < 3; ++d) y[d] = x[d] + mid * r * e[d];
         st = cdc_locate_point(ctx, y, host, &c);
         if (st != CDC_OK) return st;
-        if (c >= 0) in = mid; else out = mid;
+        if (c >= 0) {
+            in = mid;
+            last_in = c;
+        } else {
+            out = mid;
+        }
     }
     /* the face the path leaves the last inside cell through, seen from the first outside point */
-    for (int d = 0; d < 3; ++d) y[d] = x[d] + in * r * e[d];
-    st = cdc_locate_point(ctx, y, host, &c);
-    if (st != CDC_OK) return st;
-    if (c >= 0) {
-        const cdc_mesh *m = ctx->mesh;
-        for (int d = 0; d < 3; ++d) y[d] = x[d] + out * r * e[d];
-        const int32_t f = cdc_exit_face(ctx, c, y);
-        if (f >= m->n_internal_faces && m->boundary_face_kind[f - m->n_internal_faces] == CDC_FACE_PROCESSOR)
-            return CDC_OK;
-    }
+    const cdc_mesh *m = ctx->mesh;
+    for (int d = 0; d < 3; ++d) y[d] = x[d] + out * r * e[d];
+    const int32_t f = cdc_exit_face(ctx, last_in, y);
+    if (f >= m->n_internal_faces && m->boundary_face_kind[f - m->n_internal_faces] == CDC_FACE_PROCESSOR)
+        return CDC_OK;
     *fraction = 1.0 - in;
     return CDC_OK;
 }
