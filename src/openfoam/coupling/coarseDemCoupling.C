@@ -172,7 +172,11 @@ void coarseDemCoupling::couple
     outputFields(cp, cg);                      // alphaPUs, binned fields: no effect on the flow
     recordBalances(U);                         // solid volume and momentum for the Coupling line
     checkExplicitRange(alpha);
-    if (nCouplings_ == 1 || mesh_.time().writeTime()) checkParcelFill();
+    if (nCouplings_ == 1 || mesh_.time().writeTime())
+    {
+        checkParcelFill();
+        checkDragCoverage();
+    }
 }
 
 // The DEM's particles of this rank and the ghosts: copies of the neighbours' particles whose kernels
