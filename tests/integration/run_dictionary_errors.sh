@@ -221,5 +221,33 @@ else
     echo "PASS: serial run ends without the 'Finalizing MPI' warning"; pass=$((pass+1))
 fi
 
+# on 2 ranks every rank's error names the file: the other ranks get couplingProperties from the
+# master as a stream, and their copy, its entries and sub-dictionaries were named "IOstream" in their
+# messages. An unknown sub-dictionary (its parent's name), an unknown key in a Props dictionary (the
+# sub-dictionary's name) and a bad value (the entry's own name)
+check_np2() {
+    local name="$1" edit="$2" c="$work/$1_np2"
+    cp -r "$base" "$c"
+    sed -i "$edit" "$c/constant/couplingProperties"
+    (cd "$c" && decomposePar > log.decomposePar 2>&1 &&
+     timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 coarseDemFoam -parallel > log 2>&1)
+    local rc=$?
+    if [ $rc -ne 0 ] && grep -q "^\[0\].*constant/couplingProperties" "$c/log" &&
+       grep -q "^\[1\].*constant/couplingProperties" "$c/log" && ! grep -q IOstream "$c/log"; then
+        echo "PASS: dictionary error '$name' on 2 ranks: both ranks name constant/couplingProperties"; pass=$((pass+1))
+    else
+        echo "FAIL: dictionary error '$name' on 2 ranks (exit $rc): not both ranks named constant/couplingProperties" \
+             "($(grep -c IOstream "$c/log") lines name IOstream)"
+        grep -A2 "FATAL" "$c/log" | head -8 | sed 's/^/    /'
+        fail=$((fail+1))
+    fi
+}
+check_np2 misspelt_props 's/bigParticleProps /bigparticleProps /'
+check_np2 unknown_props_key 's/bigParticleProps *{/bigParticleProps { expansionFactr 5;/'
+check_np2 bad_value 's/^couplingInterval .*/couplingInterval 1.5;/'
+# keys given twice (the later one wins): the renaming on every rank went through a link OpenFOAM
+# leaves to the replaced entry, and crashed (SIGSEGV) before the error
+check_np2 bad_value_keys_twice 's/^couplingInterval .*/couplingInterval 1.5;/; $a smoothingModel diffusion; diffusionProps { bandwidth 6e-3; }'
+
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

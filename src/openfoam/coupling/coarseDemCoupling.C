@@ -17,12 +17,35 @@ static IOobject couplingDictIO(const fvMesh& mesh)
     return IOobject("couplingProperties", mesh.time().constant(), mesh, IOobject::MUST_READ, IOobject::NO_WRITE);
 }
 
+// In a parallel run the master reads couplingProperties and streams it to the other ranks, whose copy
+// is then named after the stream ("IOstream"): every error raised on those ranks would name no file.
+// Names the dictionary, its entries (a bad value's error names its entry) and its sub-dictionaries
+// after the master's file on every rank, as OpenFOAM names them when it reads the file.
+// The entries are found by keyword, not with the dictionary's non-const iterator: in OpenFOAM v1912
+// an entry replaced by a later one of the same keyword (a key given twice) leaves a link to the deleted
+// entry that only that iterator follows (DLListBase::replace), and the renaming crashed there.
+static void nameAfterFile(dictionary& dict, const fileName& name)
+{
+    dict.name() = name;
+    for (const word& keyword : dict.toc())
+    {
+        entry* e = dict.findEntry(keyword, keyType::LITERAL);
+        if (!e) continue;
+        e->name() = name + '.' + keyword;
+        if (e->isDict()) nameAfterFile(e->dict(), e->name());
+    }
+}
+
 // The sub-dictionaries of couplingProperties are the <model>Props of the models. One whose name
 // matches no model (a misspelt name) would be ignored and its model would run with the defaults:
-// refuse it, naming the dictionaries that are read. Returns its argument, so that the check runs
-// before the first model reads its dictionary.
-static const dictionary& checkPropsDictionaries(const dictionary& dict)
+// refuse it, naming the dictionaries that are read. Returns its argument, so that the check (and the
+// naming after the file) runs before the first model reads its dictionary.
+static const dictionary& checkPropsDictionaries(IOdictionary& io)
 {
+    dictionary& dict = io; // IOdictionary's own name() is the object's ("couplingProperties")
+    fileName path = dict.name(); // the master's: the file it read
+    Pstream::scatter(path);
+    nameAfterFile(dict, path);
     wordHashSet known{"backgroundFieldsProps", "diffusionProps", "sizeAwareDiffusionProps", "openSystem"};
     for (int i = 0; i < cdc_method_count(); ++i) known.insert(word(cdc_method_name(i)) + "Props");
     for (const word& f : forceModel::dictionaryConstructorTablePtr_->sortedToc()) known.insert(f + "Props");
