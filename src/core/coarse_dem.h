@@ -245,6 +245,12 @@ typedef struct cdc_diffusion_params {
 
 cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double *phi);
 
+/* The same smoothing of n_fields (1 to CDC_DIFFUSE_MAX_FIELDS) cell fields side by side in phi
+ * (phi[c n_fields + d]: a vector field's components, or several fields packed): each field gets the
+ * bits cdc_diffuse gives it alone, in fewer passes over the mesh (the fields share the matrix). */
+#define CDC_DIFFUSE_MAX_FIELDS 8
+cdc_status cdc_diffuse_fields(cdc_context *ctx, const cdc_diffusion_params *prm, double *phi, int n_fields);
+
 /* Processor faces of one rank's mesh, for the field operations across ranks. The core has no MPI:
  * the caller (one rank of a decomposed case) lists this rank's processor faces and supplies the halo
  * exchange and the global sum. With a halo set, cdc_diffuse couples the ranks through these faces

@@ -261,6 +261,7 @@ void cdc_context_destroy(cdc_context *ctx)
     cdc_dvec_free(&ctx->class_sum);
     cdc_dvec_free(&ctx->halo_coeff);
     cdc_dvec_free(&ctx->halo_nbr);
+    cdc_dvec_free(&ctx->halo_fields);
     cdc_dvec_free(&ctx->halo_work);
     free(ctx);
 }

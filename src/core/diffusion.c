@@ -49,23 +49,40 @@ static cdc_status face_coefficients(cdc_context *ctx)
 }
 
 /* y = K x, the (negative semi-definite) Laplacian times volume: y_P = sum_f a_f (x_N - x_P), over
- * internal faces and, with a halo, processor faces (coefficients ctx->halo_coeff). */
-static cdc_status laplacian(cdc_context *ctx, const double *a, const double *x, double *y)
+ * internal faces and, with a halo, processor faces (coefficients ctx->halo_coeff). x and y hold k
+ * fields side by side (x[c k + d]); each field's sums run in the same order as for one field alone. */
+static cdc_status laplacian(cdc_context *ctx, const double *a, const double *x, double *y, int k)
 {
     const cdc_mesh *m = ctx->mesh;
-    memset(y, 0, (size_t)m->n_cells * sizeof *y);
+    memset(y, 0, (size_t)m->n_cells * (size_t)k * sizeof *y);
     for (int32_t f = 0; f < m->n_internal_faces; ++f) {
-        const int32_t o = m->owner[f], n = m->neighbour[f];
-        const double flux = a[f] * (x[n] - x[o]);
-        y[o] += flux;
-        y[n] -= flux;
+        const size_t o = (size_t)m->owner[f] * (size_t)k, n = (size_t)m->neighbour[f] * (size_t)k;
+        for (int d = 0; d < k; ++d) {
+            const double flux = a[f] * (x[n + d] - x[o + d]);
+            y[o + d] += flux;
+            y[n + d] -= flux;
+        }
     }
     if (!ctx->has_halo) return CDC_OK;
     const cdc_halo *h = &ctx->halo;
     double *xn = ctx->halo_nbr.v;
-    if (h->exchange(h->user, x, xn))
-        return cdc_fail(ctx, CDC_ERR_ARGUMENT, "diffusion: the halo exchange failed");
-    for (int32_t i = 0; i < h->n_faces; ++i) y[h->cell[i]] += ctx->halo_coeff.v[i] * (xn[i] - x[h->cell[i]]);
+    if (k == 1) {
+        if (h->exchange(h->user, x, xn)) return cdc_fail(ctx, CDC_ERR_ARGUMENT, "diffusion: the halo exchange failed");
+    } else {
+        /* the caller's exchange carries one value per cell: one exchange per field */
+        const size_t nc = (size_t)m->n_cells;
+        double *cells = ctx->halo_fields.v, *nbr = cells + nc;
+        for (int d = 0; d < k; ++d) {
+            for (size_t c = 0; c < nc; ++c) cells[c] = x[c * (size_t)k + (size_t)d];
+            if (h->exchange(h->user, cells, nbr))
+                return cdc_fail(ctx, CDC_ERR_ARGUMENT, "diffusion: the halo exchange failed");
+            for (int32_t i = 0; i < h->n_faces; ++i) xn[(size_t)i * (size_t)k + (size_t)d] = nbr[i];
+        }
+    }
+    for (int32_t i = 0; i < h->n_faces; ++i) {
+        const size_t c = (size_t)h->cell[i] * (size_t)k, j = (size_t)i * (size_t)k;
+        for (int d = 0; d < k; ++d) y[c + d] += ctx->halo_coeff.v[i] * (xn[j + d] - x[c + d]);
+    }
     return CDC_OK;
 }
 
@@ -85,18 +102,25 @@ static int upper_triangular(const cdc_mesh *m)
     return 1;
 }
 
-/* z = M^-1 r: DIC (rD holds the reciprocal of the factor's diagonal) or Jacobi (rD = 1/diag).
- * DIC: M = (D + L) D^-1 (D + U), L and U the matrix's off-diagonal parts (-a_f), solved by a forward
- * sweep over the faces in order and a backward sweep in reverse. */
+/* z = M^-1 r: DIC (rD holds the reciprocal of the factor's diagonal) or Jacobi (rD = 1/diag), for k
+ * fields side by side. DIC: M = (D + L) D^-1 (D + U), L and U the matrix's off-diagonal parts (-a_f),
+ * solved by a forward sweep over the faces in order and a backward sweep in reverse. */
 static void precondition(const cdc_mesh *m, int dic, const double *a, const double *rD, const double *r,
-                         double *z)
+                         double *z, int k)
 {
-    const size_t nc = (size_t)m->n_cells;
-    for (size_t c = 0; c < nc; ++c) z[c] = rD[c] * r[c];
+    const size_t nc = (size_t)m->n_cells, K = (size_t)k;
+    for (size_t c = 0; c < nc; ++c)
+        for (size_t d = 0; d < K; ++d) z[c * K + d] = rD[c] * r[c * K + d];
     if (!dic) return;
     const int32_t ni = m->n_internal_faces;
-    for (int32_t f = 0; f < ni; ++f) z[m->neighbour[f]] += rD[m->neighbour[f]] * a[f] * z[m->owner[f]];
-    for (int32_t f = ni - 1; f >= 0; --f) z[m->owner[f]] += rD[m->owner[f]] * a[f] * z[m->neighbour[f]];
+    for (int32_t f = 0; f < ni; ++f) {
+        const size_t o = (size_t)m->owner[f], n = (size_t)m->neighbour[f];
+        for (size_t d = 0; d < K; ++d) z[n * K + d] += rD[n] * a[f] * z[o * K + d];
+    }
+    for (int32_t f = ni - 1; f >= 0; --f) {
+        const size_t o = (size_t)m->owner[f], n = (size_t)m->neighbour[f];
+        for (size_t d = 0; d < K; ++d) z[o * K + d] += rD[o] * a[f] * z[n * K + d];
+    }
 }
 
 /* D at a face: 1, or with the D rule the harmonic mean of the cells' D (0.001 in cells larger than 4 d) */
@@ -153,64 +177,98 @@ static void setup_system(cdc_context *ctx, const cdc_diffusion_params *prm, impl
     for (size_t c = 0; c < nc; ++c) rD[c] = 1.0 / rD[c];
 }
 
-/* One implicit step: A y = V/dtau x by preconditioned CG from y = x (so r = K x); work is four
- * vectors of cells (r, p, q, z). */
-static cdc_status solve_step(cdc_context *ctx, const implicit_system *sys, const double *x, double *y, double *work[4])
+/* One implicit step: A y = V/dtau x by preconditioned CG from y = x (so r = K x), for k fields side by
+ * side: the fields share the matrix and each sweep over the faces, while each has its own CG scalars
+ * and stops when it converges (its values then stay as they are), so every field gets the bits its
+ * solve alone would give. Work is four vectors of k values per cell (r, p, q, z). */
+static cdc_status solve_step(cdc_context *ctx, const implicit_system *sys, const double *x, double *y, double *work[4],
+                             int k)
 {
     const cdc_mesh *m = ctx->mesh;
-    const size_t nc = (size_t)m->n_cells;
+    const size_t nc = (size_t)m->n_cells, K = (size_t)k;
     const double dtau = sys->dtau, *a = sys->a, *rD = sys->rD;
     double *r = work[0], *p = work[1], *q = work[2], *z = work[3];
     cdc_status st;
-    memcpy(y, x, nc * sizeof *y);
-    if ((st = laplacian(ctx, a, y, r)) != CDC_OK) return st;
-    double norms[3] = {0.0, 0.0, 0.0}; /* |b|^2, |r|^2, r.z */
-    precondition(m, sys->dic, a, rD, r, p);
-    for (size_t c = 0; c < nc; ++c) {
-        const double b = m->cell_volumes[c] / dtau * x[c];
-        norms[0] += b * b;
-        norms[1] += r[c] * r[c];
-        norms[2] += r[c] * p[c];
+    memcpy(y, x, nc * K * sizeof *y);
+    if ((st = laplacian(ctx, a, y, r, k)) != CDC_OK) return st;
+    double norms[3 * CDC_DIFFUSE_MAX_FIELDS] = {0.0}; /* per field: |b|^2, |r|^2, r.z */
+    precondition(m, sys->dic, a, rD, r, p, k);
+    for (size_t c = 0; c < nc; ++c)
+        for (size_t d = 0; d < K; ++d) {
+            const double b = m->cell_volumes[c] / dtau * x[c * K + d];
+            norms[3 * d] += b * b;
+            norms[3 * d + 1] += r[c * K + d] * r[c * K + d];
+            norms[3 * d + 2] += r[c * K + d] * p[c * K + d];
+        }
+    if ((st = global_sum(ctx, norms, 3 * k)) != CDC_OK) return st;
+    double bnorm[CDC_DIFFUSE_MAX_FIELDS], rnorm[CDC_DIFFUSE_MAX_FIELDS], rz[CDC_DIFFUSE_MAX_FIELDS];
+    double alpha[CDC_DIFFUSE_MAX_FIELDS], beta[CDC_DIFFUSE_MAX_FIELDS];
+    int active[CDC_DIFFUSE_MAX_FIELDS];
+    for (size_t d = 0; d < K; ++d) {
+        bnorm[d] = sqrt(norms[3 * d]);
+        rnorm[d] = norms[3 * d + 1];
+        rz[d] = norms[3 * d + 2];
     }
-    if ((st = global_sum(ctx, norms, 3)) != CDC_OK) return st;
-    const double bnorm = sqrt(norms[0]);
-    double rnorm = norms[1], rz = norms[2];
-    int it = 0;
-    while (sqrt(rnorm) > sys->tol * bnorm) {
-        if (++it > sys->max_it)
+    for (int it = 1;; ++it) {
+        int worst = -1; /* the active field furthest from its tolerance */
+        for (size_t d = 0; d < K; ++d) {
+            active[d] = sqrt(rnorm[d]) > sys->tol * bnorm[d];
+            if (active[d] && (worst < 0 || sqrt(rnorm[d]) / bnorm[d] > sqrt(rnorm[worst]) / bnorm[worst]))
+                worst = (int)d;
+        }
+        if (worst < 0) break;
+        if (it > sys->max_it)
             return cdc_fail(ctx, CDC_ERR_NOT_CONVERGED,
-                            "diffusion: CG did not reach tolerance %g in %d iterations (relative residual %g)",
-                            sys->tol, sys->max_it, sqrt(rnorm) / bnorm);
-        if ((st = laplacian(ctx, a, p, q)) != CDC_OK) return st;
-        double pAp = 0.0;
-        for (size_t c = 0; c < nc; ++c) {
-            q[c] = m->cell_volumes[c] / dtau * p[c] - q[c];
-            pAp += p[c] * q[c];
-        }
-        if ((st = global_sum(ctx, &pAp, 1)) != CDC_OK) return st;
-        const double alpha = rz / pAp;
-        double sums[2] = {0.0, 0.0}; /* |r|^2, r.z */
-        for (size_t c = 0; c < nc; ++c) {
-            y[c] += alpha * p[c];
-            r[c] -= alpha * q[c];
-        }
-        precondition(m, sys->dic, a, rD, r, z);
-        for (size_t c = 0; c < nc; ++c) {
-            sums[0] += r[c] * r[c];
-            sums[1] += r[c] * z[c];
-        }
-        if ((st = global_sum(ctx, sums, 2)) != CDC_OK) return st;
-        rnorm = sums[0];
-        const double beta = sums[1] / rz;
-        rz = sums[1];
-        for (size_t c = 0; c < nc; ++c) p[c] = z[c] + beta * p[c];
+                            "diffusion: CG did not reach tolerance %g in %d iterations (relative residual %g%s)",
+                            sys->tol, sys->max_it, sqrt(rnorm[worst]) / bnorm[worst],
+                            k > 1 ? ", the worst of the fields smoothed together" : "");
+        if ((st = laplacian(ctx, a, p, q, k)) != CDC_OK) return st;
+        double pAp[CDC_DIFFUSE_MAX_FIELDS] = {0.0};
+        for (size_t c = 0; c < nc; ++c)
+            for (size_t d = 0; d < K; ++d) {
+                q[c * K + d] = m->cell_volumes[c] / dtau * p[c * K + d] - q[c * K + d];
+                pAp[d] += p[c * K + d] * q[c * K + d];
+            }
+        if ((st = global_sum(ctx, pAp, k)) != CDC_OK) return st;
+        for (size_t d = 0; d < K; ++d) alpha[d] = active[d] ? rz[d] / pAp[d] : 0.0;
+        for (size_t c = 0; c < nc; ++c)
+            for (size_t d = 0; d < K; ++d)
+                if (active[d]) {
+                    y[c * K + d] += alpha[d] * p[c * K + d];
+                    r[c * K + d] -= alpha[d] * q[c * K + d];
+                }
+        precondition(m, sys->dic, a, rD, r, z, k);
+        double sums[2 * CDC_DIFFUSE_MAX_FIELDS] = {0.0}; /* per field: |r|^2, r.z */
+        for (size_t c = 0; c < nc; ++c)
+            for (size_t d = 0; d < K; ++d) {
+                sums[2 * d] += r[c * K + d] * r[c * K + d];
+                sums[2 * d + 1] += r[c * K + d] * z[c * K + d];
+            }
+        if ((st = global_sum(ctx, sums, 2 * k)) != CDC_OK) return st;
+        for (size_t d = 0; d < K; ++d)
+            if (active[d]) {
+                rnorm[d] = sums[2 * d];
+                beta[d] = sums[2 * d + 1] / rz[d];
+                rz[d] = sums[2 * d + 1];
+            }
+        for (size_t c = 0; c < nc; ++c)
+            for (size_t d = 0; d < K; ++d)
+                if (active[d]) p[c * K + d] = z[c * K + d] + beta[d] * p[c * K + d];
     }
     return CDC_OK;
 }
 
 cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double *phi)
 {
+    return cdc_diffuse_fields(ctx, prm, phi, 1);
+}
+
+cdc_status cdc_diffuse_fields(cdc_context *ctx, const cdc_diffusion_params *prm, double *phi, int n_fields)
+{
     if (!ctx || !prm || !phi) return cdc_fail(ctx, CDC_ERR_ARGUMENT, "diffusion: NULL argument");
+    if (n_fields < 1 || n_fields > CDC_DIFFUSE_MAX_FIELDS)
+        return cdc_fail(ctx, CDC_ERR_ARGUMENT, "diffusion: %d fields at once (1 to %d)", n_fields,
+                        CDC_DIFFUSE_MAX_FIELDS);
     if (!(prm->bandwidth > 0.0) || !isfinite(prm->bandwidth))
         return cdc_fail(ctx, CDC_ERR_ARGUMENT, "diffusion: bandwidth %g is invalid (must be > 0)", prm->bandwidth);
     if (prm->n_steps < 0 || prm->max_iterations < 0 || prm->tolerance < 0.0)
@@ -221,12 +279,16 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
     if (st != CDC_OK) return st;
 
     const cdc_mesh *m = ctx->mesh;
-    const size_t nc = (size_t)m->n_cells, ni = (size_t)m->n_internal_faces;
-    /* scratch 0..5 and 7 per cell, 6 per internal face */
+    const size_t nc = (size_t)m->n_cells, ni = (size_t)m->n_internal_faces, K = (size_t)n_fields;
+    /* scratch 0..5 and 7 per cell (0..4 and 7 with the fields' values), 6 per internal face */
     _Static_assert(CDC_N_SCRATCH >= 8, "diffusion uses scratch vectors 0..7");
-    for (int k = 0; k < 8; ++k)
-        if (cdc_dvec_reserve(&ctx->scratch[k], k == 6 ? (ni > 0 ? ni : 1) : nc))
+    for (int s = 0; s < 8; ++s)
+        if (cdc_dvec_reserve(&ctx->scratch[s], s == 6 ? (ni > 0 ? ni : 1) : s == 5 ? nc : nc * K))
             return cdc_fail(ctx, CDC_ERR_NOMEM, "diffusion: out of memory");
+    if (ctx->has_halo && n_fields > 1 &&
+        (cdc_dvec_reserve(&ctx->halo_nbr, (size_t)ctx->halo.n_faces * K + 1) ||
+         cdc_dvec_reserve(&ctx->halo_fields, nc + (size_t)ctx->halo.n_faces + 1)))
+        return cdc_fail(ctx, CDC_ERR_NOMEM, "diffusion: out of memory");
     double *x = ctx->scratch[0].v, *y = ctx->scratch[1].v;
     double *work[4] = {ctx->scratch[2].v, ctx->scratch[3].v, ctx->scratch[4].v, ctx->scratch[7].v};
     implicit_system sys = {ctx->scratch[6].v, ctx->scratch[5].v, 0.0, 0, 0.0, 0};
@@ -234,14 +296,15 @@ cdc_status cdc_diffuse(cdc_context *ctx, const cdc_diffusion_params *prm, double
     const int n_steps = prm->n_steps > 0 ? prm->n_steps : 4;
 
     /* Work on x so phi is untouched if a solve fails. */
-    memcpy(x, phi, nc * sizeof *x);
+    memcpy(x, phi, nc * K * sizeof *x);
     for (int step = 0; step < n_steps; ++step) {
-        if ((st = solve_step(ctx, &sys, x, y, work)) != CDC_OK) return st;
+        if ((st = solve_step(ctx, &sys, x, y, work, n_fields)) != CDC_OK) return st;
         /* Flux-form update from the implicit solution: conserves sum(x V) exactly. */
         double *q = work[2];
-        if ((st = laplacian(ctx, sys.a, y, q)) != CDC_OK) return st;
-        for (size_t c = 0; c < nc; ++c) x[c] += sys.dtau / m->cell_volumes[c] * q[c];
+        if ((st = laplacian(ctx, sys.a, y, q, n_fields)) != CDC_OK) return st;
+        for (size_t c = 0; c < nc; ++c)
+            for (size_t d = 0; d < K; ++d) x[c * K + d] += sys.dtau / m->cell_volumes[c] * q[c * K + d];
     }
-    memcpy(phi, x, nc * sizeof *phi);
+    memcpy(phi, x, nc * K * sizeof *phi);
     return CDC_OK;
 }

@@ -114,6 +114,7 @@ struct cdc_context {
     int has_halo;
     cdc_halo halo;
     cdc_dvec halo_coeff, halo_nbr;
+    cdc_dvec halo_fields;  /* diffusion of several fields: one field's cell values, then its nbr values */
     cdc_dvec halo_work;    /* packing limiter: the other side's values per processor face */
 };
 

@@ -1649,6 +1649,51 @@ static void test_method_registry(void)
     CHECK(cdc_method_params("noSuchMethod") == 0, "unknown method has parameters");
 }
 
+/* Several fields smoothed together (cdc_diffuse_fields) get the bits each gets alone (cdc_diffuse):
+ * fields that converge after different numbers of CG iterations (a point source, a rough field, a
+ * smooth one) and a zero field, in serial and across the periodic halo. */
+static void test_diffusion_fields(void)
+{
+    enum { NX = 20, NF = 4 };
+    periodic_box pb;
+    if (periodic_box_open(&pb, NX)) return;
+    const size_t nc = (size_t)pb.t.b.mesh.n_cells;
+    double *alone = calloc(nc * NF, sizeof(double)), *together = calloc(nc * NF, sizeof(double));
+    cdc_diffusion_params prm = {0};
+    prm.bandwidth = 4 * CUBE_DX;
+    for (int halo = 1; halo >= 0; --halo) {
+        CHECK(cdc_context_set_halo(pb.t.ctx, halo ? &pb.h : NULL) == CDC_OK, "set halo");
+        unsigned lcg = 12345;
+        for (size_t c = 0; c < nc; ++c) {
+            lcg = lcg * 1103515245u + 12345u;
+            alone[0 * nc + c] = c == (size_t)box_mesh_cell(&pb.t.b, 0, 1, 1) ? 1.0 : 0.0;
+            alone[1 * nc + c] = (double)(lcg >> 8) / (double)(1u << 24);
+            alone[2 * nc + c] = 0.0;
+            alone[3 * nc + c] = sin(0.3 * (double)c);
+        }
+        for (size_t c = 0; c < nc; ++c)
+            for (int d = 0; d < NF; ++d) together[c * NF + d] = alone[d * nc + c];
+        const int calls_before = pb.ph.calls;
+        for (int d = 0; d < NF; ++d)
+            CHECK(cdc_diffuse(pb.t.ctx, &prm, alone + d * nc) == CDC_OK, "diffuse alone: %s", cdc_last_error(pb.t.ctx));
+        const int calls_alone = pb.ph.calls - calls_before;
+        CHECK(cdc_diffuse_fields(pb.t.ctx, &prm, together, NF) == CDC_OK, "diffuse together: %s",
+              cdc_last_error(pb.t.ctx));
+        int differ = 0;
+        for (size_t c = 0; c < nc; ++c)
+            for (int d = 0; d < NF; ++d) differ += together[c * NF + d] != alone[d * nc + c];
+        CHECK(differ == 0, "%s: %d values smoothed together differ from the same fields smoothed alone",
+              halo ? "with the halo" : "serial", differ);
+        CHECK(!halo || calls_alone > 0, "the halo exchange was never called");
+    }
+    CHECK(cdc_diffuse_fields(pb.t.ctx, &prm, together, 0) == CDC_ERR_ARGUMENT &&
+          cdc_diffuse_fields(pb.t.ctx, &prm, together, CDC_DIFFUSE_MAX_FIELDS + 1) == CDC_ERR_ARGUMENT,
+          "a field count out of 1..%d accepted", CDC_DIFFUSE_MAX_FIELDS);
+    free(alone);
+    free(together);
+    cube_case_close(&pb.t);
+}
+
 int main(void)
 {
     run("sphere_box_exact", test_sphere_box_exact);
@@ -1664,6 +1709,7 @@ int main(void)
     run("wall_mirror_flat", test_wall_mirror_flat);
     run("diffusion", test_diffusion);
     run("diffusion_halo", test_diffusion_halo);
+    run("diffusion_fields", test_diffusion_fields);
     run("size_aware_diffusion", test_size_aware_diffusion);
     run("limiter", test_limiter);
     run("limiter_halo", test_limiter_halo);

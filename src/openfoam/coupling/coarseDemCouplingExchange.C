@@ -145,16 +145,31 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
     if (smooth)
     {
         // diffusion in flux form keeps sum(f V), so the balance holds as spread
-        voidFraction_.smoothLikeAlpha(f, 3);
-        if (implicitDrag_)
+        if (!implicitDrag_)
         {
-            // K of the local particles and ghosts, already gathered above: no second halo exchange
-            std::vector<double> Kr(exchangeK_);
-            for (double& x : Kr) x /= fluid_.rho;
-            demMesh_.check(cdc_spread(k, Kr.data(), 1, Ksl.primitiveFieldRef().data()), "spread");
-            voidFraction_.smoothLikeAlpha(Ksl.primitiveFieldRef().data(), 1);
-            KslUs.primitiveFieldRef() = Ksl.primitiveField()*U.primitiveField();
+            voidFraction_.smoothLikeAlpha(f, 3);
+            return;
         }
+        // K of the local particles and ghosts, already gathered above: no second halo exchange
+        std::vector<double> Kr(exchangeK_);
+        for (double& x : Kr) x /= fluid_.rho;
+        scalarField& ksl = Ksl.primitiveFieldRef();
+        demMesh_.check(cdc_spread(k, Kr.data(), 1, ksl.data()), "spread");
+        // fFluid and Ksl smoothed together, side by side per cell
+        const label nCells = mesh_.nCells();
+        std::vector<double> both(size_t(nCells)*4);
+        for (label c = 0; c < nCells; ++c)
+        {
+            for (int d = 0; d < 3; ++d) both[size_t(c)*4 + d] = f[size_t(c)*3 + d];
+            both[size_t(c)*4 + 3] = ksl[c];
+        }
+        voidFraction_.smoothLikeAlpha(both.data(), 4);
+        for (label c = 0; c < nCells; ++c)
+        {
+            for (int d = 0; d < 3; ++d) f[size_t(c)*3 + d] = both[size_t(c)*4 + d];
+            ksl[c] = both[size_t(c)*4 + 3];
+        }
+        KslUs.primitiveFieldRef() = Ksl.primitiveField()*U.primitiveField();
     }
 }
 
