@@ -54,18 +54,6 @@ static double rnd(void)
     return program_uniform(&rng_state);
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 typedef struct {
     const char *name;
     const char *core;
@@ -208,8 +196,8 @@ int main(int argc, char **argv)
                 tb[r] = program_seconds() - t0;
                 cdc_kernels_timing(k, &tlv[r], &tk);
             }
-            const double tl_sum = median(tlv, reps); /* locate time, median */
-            const double t_build = median(tb, reps);
+            const double tl_sum = program_median(tlv, reps); /* locate time, median */
+            const double t_build = program_median(tb, reps);
             const int32_t *off = cdc_kernels_offsets(k), *cells = cdc_kernels_cells(k);
             const double *w = cdc_kernels_weights(k);
             const double cpk = (double)off[nt] / nt;
@@ -234,7 +222,7 @@ int main(int argc, char **argv)
                 tt[r] = program_seconds() - t1;
                 tz[r] = t1 - t0;
             }
-            const double t_alpha = median(ta, reps2), t_touch = median(tt, reps2), t_zero = median(tz, reps2);
+            const double t_alpha = program_median(ta, reps2), t_touch = program_median(tt, reps2), t_zero = program_median(tz, reps2);
 
             /* the touch loop computed alpha_p * V_c */
             double err = 0.0, tot = 0.0;

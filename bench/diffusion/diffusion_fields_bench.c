@@ -25,18 +25,6 @@ static void die(const char *what, const char *why)
     exit(1);
 }
 
-static int compare_doubles(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, compare_doubles);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 int main(int argc, char **argv)
 {
     int reps = 7;
@@ -97,7 +85,7 @@ int main(int argc, char **argv)
                 if (memcmp(alone, together, nc * (size_t)k * sizeof(double)) != 0)
                     die("check", "the fields smoothed together differ from the same fields smoothed alone");
             }
-            const double a = median(t_alone, reps), t = median(t_together, reps);
+            const double a = program_median(t_alone, reps), t = program_median(t_together, reps);
             printf("%-8s %8zu %6d %5d %10.4f %12.4f %8.3f\n", meshes[mi].name, nc, k, reps, a, t, t / a);
             if (out) fprintf(out, "%s,%zu,%d,%d,%.6f,%.6f,%.4f\n", meshes[mi].name, nc, k, reps, a, t, t / a);
             free(fields); free(alone); free(together); free(one); free(t_alone); free(t_together);

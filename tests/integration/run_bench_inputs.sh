@@ -46,4 +46,15 @@ if "$kb" -n 1000 -m centre -o "$work/kernels.csv" > "$work/out" 2>&1 && [ "$(wc 
 else
     result fail "kernel_bench -n 1000 -m centre"; sed 's/^/    /' "$work/out" | tail -5
 fi
+
+make -s -C "$top/bench/diffusion" > "$work/make.log" 2>&1 || { result fail "bench: diffusion_fields_bench does not build"; cat "$work/make.log"; finish; }
+db="$top/bench/diffusion/build/diffusion_fields_bench"
+refused diffusion-reps "-r needs 1 to 1000 repetitions" "$db" -r 0
+refused diffusion-option "usage:" "$db" -x
+# one repetition on both meshes: 4 rows, the fields smoothed together checked against one by one
+if "$db" -r 1 -o "$work/fields.csv" > "$work/out" 2>&1 && [ "$(wc -l < "$work/fields.csv")" -eq 5 ]; then
+    result ok "diffusion_fields_bench -r 1 runs and writes four rows"
+else
+    result fail "diffusion_fields_bench -r 1"; sed 's/^/    /' "$work/out" | tail -5
+fi
 finish

@@ -1,13 +1,14 @@
 /*
- * program_util.h -- helpers shared by the programs built on the core (the kernel benchmark, the
- * particleDistribution tutorial): a monotonic wall clock and a small fixed-seed random number
- * generator, so that runs are reproducible on every platform. Not part of the core library, which
+ * program_util.h -- helpers shared by the programs built on the core (the benchmarks, the
+ * particleDistribution tutorial): a monotonic wall clock, a small fixed-seed random number
+ * generator and the median of timings, so that runs are reproducible on every platform. Not part of the core library, which
  * never reads a clock of its own.
  */
 #ifndef CDC_PROGRAM_UTIL_H
 #define CDC_PROGRAM_UTIL_H
 
 #include <stdint.h>
+#include <stdlib.h>
 #include <time.h>
 
 /* seconds on the monotonic clock (needs _POSIX_C_SOURCE >= 199309L) */
@@ -26,6 +27,19 @@ static inline double program_uniform(uint64_t *state)
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     z ^= z >> 31;
     return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static inline int program_compare_doubles(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* the median of v[0..n), n > 0 (sorts v) */
+static inline double program_median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, program_compare_doubles);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 #endif
