@@ -257,8 +257,8 @@ cdc_status cdc_diffuse_fields(cdc_context *ctx, const cdc_diffusion_params *prm,
  * (same two-point flux as internal faces, CG with global dot products), so the smoothing equals the
  * serial one to the solver tolerance and the total sum(phi V) over all ranks is conserved to
  * round-off; cdc_limit_packing moves excess volume across them as across internal faces. Every rank
- * must call cdc_diffuse and cdc_limit_packing the same number of times (the callbacks are
- * collective). The arrays must outlive the context or the next cdc_context_set_halo. */
+ * must call cdc_diffuse (cdc_diffuse_fields with the same n_fields) and cdc_limit_packing the same
+ * number of times (the callbacks are collective; cdc_diffuse_fields exchanges once per field). The arrays must outlive the context or the next cdc_context_set_halo. */
 typedef struct cdc_halo {
     int32_t n_faces;
     const int32_t *cell;       /* this rank's cell next to each processor face */
@@ -267,7 +267,8 @@ typedef struct cdc_halo {
     const double *nbr_volume;  /* volume of the neighbour rank's cell (for the D rule) */
     /* nbr[i] = the neighbour rank's value of its cell across face i, given this rank's cell values */
     int (*exchange)(void *user, const double *cell_values, double *nbr);
-    /* values[0..n) summed over all ranks, in place, with the same result bits on every rank */
+    /* values[0..n) summed over all ranks, in place, with the same result bits on every rank; each
+     * value summed as it would be alone, whatever n (cdc_diffuse_fields then equals cdc_diffuse) */
     int (*sum)(void *user, double *values, int n);
     void *user;                /* passed to the callbacks */
     /* values[0..n) replaced by their maximum over all ranks; may be NULL (then the size-aware

@@ -210,18 +210,26 @@ static cdc_status solve_step(cdc_context *ctx, const implicit_system *sys, const
         rz[d] = norms[3 * d + 2];
     }
     for (int it = 1;; ++it) {
-        int worst = -1; /* the active field furthest from its tolerance */
+        int n_active = 0;
         for (size_t d = 0; d < K; ++d) {
             active[d] = sqrt(rnorm[d]) > sys->tol * bnorm[d];
-            if (active[d] && (worst < 0 || sqrt(rnorm[d]) / bnorm[d] > sqrt(rnorm[worst]) / bnorm[worst]))
-                worst = (int)d;
+            n_active += active[d];
         }
-        if (worst < 0) break;
-        if (it > sys->max_it)
+        if (n_active == 0) break;
+        if (it > sys->max_it) {
+            int worst = -1; /* the active field furthest from its tolerance (an active field has bnorm > 0) */
+            for (size_t d = 0; d < K; ++d)
+                if (active[d] && (worst < 0 || sqrt(rnorm[d]) / bnorm[d] > sqrt(rnorm[worst]) / bnorm[worst]))
+                    worst = (int)d;
+            if (k == 1)
+                return cdc_fail(ctx, CDC_ERR_NOT_CONVERGED,
+                                "diffusion: CG did not reach tolerance %g in %d iterations (relative residual %g)",
+                                sys->tol, sys->max_it, sqrt(rnorm[worst]) / bnorm[worst]);
             return cdc_fail(ctx, CDC_ERR_NOT_CONVERGED,
-                            "diffusion: CG did not reach tolerance %g in %d iterations (relative residual %g%s)",
-                            sys->tol, sys->max_it, sqrt(rnorm[worst]) / bnorm[worst],
-                            k > 1 ? ", the worst of the fields smoothed together" : "");
+                            "diffusion: CG did not reach tolerance %g in %d iterations (relative residual %g of "
+                            "field %d of the %d smoothed together)",
+                            sys->tol, sys->max_it, sqrt(rnorm[worst]) / bnorm[worst], worst, k);
+        }
         if ((st = laplacian(ctx, a, p, q, k)) != CDC_OK) return st;
         double pAp[CDC_DIFFUSE_MAX_FIELDS] = {0.0};
         for (size_t c = 0; c < nc; ++c)

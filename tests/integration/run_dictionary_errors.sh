@@ -248,6 +248,24 @@ check_np2 bad_value 's/^couplingInterval .*/couplingInterval 1.5;/'
 # keys given twice (the later one wins): the renaming on every rank went through a link OpenFOAM
 # leaves to the replaced entry, and crashed (SIGSEGV) before the error
 check_np2 bad_value_keys_twice 's/^couplingInterval .*/couplingInterval 1.5;/; $a smoothingModel diffusion; diffusionProps { bandwidth 6e-3; }'
+# the last key of the file given again (the one replaced was the dictionary's last entry): the check of
+# the sub-dictionaries' names crashed there too, serial or not
+check_runs last_key_twice '$a forceModels ( GidaspowDrag gradPForce );'
+check_np2 bad_value_last_key_twice 's/^couplingInterval .*/couplingInterval 1.5;/; $a forceModels ( GidaspowDrag gradPForce );'
+# the dense cells without drag counted over both ranks (ghost particles' kernels reach across)
+c="$work/drag_misses_dense_cells_np2"
+cp -r "$base" "$c"
+sed -i "$centre_diffusion" "$c/constant/couplingProperties"
+(cd "$c" && eval "$half_mesh" && decomposePar > log.decomposePar 2>&1 &&
+ timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 coarseDemFoam -parallel > log 2>&1)
+rc=$?
+serial_count=$(grep -o '[0-9]* of the [0-9]* dense cells' "$work/drag_misses_dense_cells/log" | head -1)
+if [ $rc -eq 0 ] && [ -n "$serial_count" ] && grep -qF "$serial_count" "$c/log"; then
+    echo "PASS: 2 ranks count the serial run's dense cells without drag ($serial_count)"; pass=$((pass+1))
+else
+    echo "FAIL: 2 ranks (exit $rc) did not count the serial run's dense cells without drag ('$serial_count'):" \
+         "$(grep -o '[0-9]* of the [0-9]* dense cells' "$c/log" | head -1)"; fail=$((fail+1))
+fi
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

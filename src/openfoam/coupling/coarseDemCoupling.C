@@ -42,10 +42,12 @@ static void nameAfterFile(dictionary& dict, const fileName& name)
 // naming after the file) runs before the first model reads its dictionary.
 static const dictionary& checkPropsDictionaries(IOdictionary& io)
 {
-    dictionary& dict = io; // IOdictionary's own name() is the object's ("couplingProperties")
-    fileName path = dict.name(); // the master's: the file it read
+    dictionary& file = io;          // as a dictionary: IOdictionary's own name() is the object's
+    fileName path = file.name();    // the master's: the file it read
     Pstream::scatter(path);
-    nameAfterFile(dict, path);
+    nameAfterFile(file, path);
+    // read through a const view: the non-const iterator would follow the link nameAfterFile avoids
+    const dictionary& dict = file;
     wordHashSet known{"backgroundFieldsProps", "diffusionProps", "sizeAwareDiffusionProps", "openSystem"};
     for (int i = 0; i < cdc_method_count(); ++i) known.insert(word(cdc_method_name(i)) + "Props");
     for (const word& f : forceModel::dictionaryConstructorTablePtr_->sortedToc()) known.insert(f + "Props");

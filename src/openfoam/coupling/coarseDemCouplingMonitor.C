@@ -224,7 +224,8 @@ void coarseDemCoupling::checkDragCoverage()
         << " or a run that diverges)" << nl << "    "
         << (voidFraction_.smoothingName() == "diffusion"
             ? "set smoothExchangeFields true in diffusionProps (the drag smoothed alike), or use a method"
-            : "use a method")
+            : "use smoothingModel diffusion with smoothExchangeFields true in diffusionProps (the drag"
+              " smoothed alike), or a method")
         << " that spreads a particle over several cells (bigParticle, twoGrid, gaussian)" << endl;
     warnedDragCoverage_ = true;
 }
