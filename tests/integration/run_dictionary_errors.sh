@@ -14,14 +14,27 @@ cp -r "$top/tutorials/ErgunTest" "$base"
     { echo "FAIL: dictionary errors: could not prepare the base case"; echo "0 passed, 1 failed"; exit 1; }
 
 pass=0; fail=0
+# run_case DIR 'sed expression on constant/couplingProperties' ['extra shell on the case'] [RANKS]: a copy
+# of the base case in DIR with the edit and the extra shell applied, run by coarseDemFoam (serially, or
+# with RANKS 2 decomposed on 2 ranks) into DIR/log; returns the solver's exit status
+run_case() {
+    local c="$1" edit="$2" extra="${3:-}" ranks="${4:-1}"
+    cp -r "$base" "$c"
+    [ -n "$edit" ] && sed -i "$edit" "$c/constant/couplingProperties"
+    [ -n "$extra" ] && (cd "$c" && eval "$extra")
+    if [ "$ranks" = 2 ]; then
+        (cd "$c" && decomposePar > log.decomposePar 2>&1 &&
+         timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 coarseDemFoam -parallel > log 2>&1)
+    else
+        (cd "$c" && { [ -f env.sh ] && . ./env.sh; timeout 120 coarseDemFoam > log 2>&1; })
+    fi
+}
+
 # check NAME 'sed expression on constant/couplingProperties' 'expected text' ['extra shell on the case']
 check() {
     local name="$1" edit="$2" expect="$3" extra="${4:-}"
     local c="$work/$name"
-    cp -r "$base" "$c"
-    [ -n "$edit" ] && sed -i "$edit" "$c/constant/couplingProperties"
-    [ -n "$extra" ] && (cd "$c" && eval "$extra")
-    (cd "$c" && { [ -f env.sh ] && . ./env.sh; timeout 120 coarseDemFoam > log 2>&1; })
+    run_case "$c" "$edit" "$extra"
     local rc=$?
     # LIGGGHTS reports its own errors in log.liggghts (its screen output is off)
     if [ $rc -ne 0 ] && cat "$c/log" "$c/log.liggghts" 2>/dev/null | grep -qF -- "$expect"; then
@@ -36,10 +49,7 @@ check() {
 # check_runs NAME 'sed expression' ['extra shell on the case']: a valid edit; the case must run to its end (exit 0)
 check_runs() {
     local name="$1" edit="$2" extra="${3:-}" c="$work/$1"
-    cp -r "$base" "$c"
-    sed -i "$edit" "$c/constant/couplingProperties"
-    [ -n "$extra" ] && (cd "$c" && eval "$extra")
-    (cd "$c" && timeout 120 coarseDemFoam > log 2>&1)
+    run_case "$c" "$edit" "$extra"
     local rc=$?
     if [ $rc -eq 0 ] && grep -q "^End" "$c/log"; then
         echo "PASS: valid setting '$name' runs to the end"; pass=$((pass+1))
@@ -53,10 +63,7 @@ check_runs() {
 # (exit 0) and its log say the expected text; 'what' names the kind of setting in the PASS/FAIL line
 check_says() {
     local name="$1" what="$2" edit="$3" expect="$4" extra="${5:-}" c="$work/$1"
-    cp -r "$base" "$c"
-    sed -i "$edit" "$c/constant/couplingProperties"
-    [ -n "$extra" ] && (cd "$c" && eval "$extra")
-    (cd "$c" && timeout 120 coarseDemFoam > log 2>&1)
+    run_case "$c" "$edit" "$extra"
     local rc=$?
     if [ $rc -eq 0 ] && grep -q "^End" "$c/log" && grep -qF -- "$expect" "$c/log"; then
         echo "PASS: $what '$name' runs and says: $expect"; pass=$((pass+1))
@@ -67,6 +74,19 @@ check_says() {
 }
 # check_warns NAME 'sed expression' 'expected text' ['extra shell']: a setting that has no effect
 check_warns() { check_says "$1" "ineffective setting" "$2" "$3" "${4:-}"; }
+
+# check_quiet NAME 'sed expression' 'unexpected text' ['extra shell']: the case must run to its end
+# (exit 0) and its log not say the text
+check_quiet() {
+    local name="$1" edit="$2" unexpected="$3" extra="${4:-}" c="$work/$1"
+    run_case "$c" "$edit" "$extra"
+    local rc=$?
+    if [ $rc -eq 0 ] && grep -q "^End" "$c/log" && ! grep -qF -- "$unexpected" "$c/log"; then
+        echo "PASS: valid setting '$name' runs without: $unexpected"; pass=$((pass+1))
+    else
+        echo "FAIL: valid setting '$name' (exit $rc) did not run without: $unexpected"; fail=$((fail+1))
+    fi
+}
 
 # background fields with the void-fraction method's own kernel: built once, and said so; another
 # expansion factor: a kernel of its own
@@ -196,19 +216,6 @@ half_mesh="sed -i 's/(10 10 50)/(20 20 100)/' system/blockMeshDict && blockMesh 
 centre_diffusion='s/^voidFractionModel .*/voidFractionModel centre;/; s/^smoothingModel .*/smoothingModel diffusion;/; s/^diffusionProps .*/diffusionProps { bandwidth 3e-3; }/'
 check_warns drag_misses_dense_cells "$centre_diffusion" \
     "set smoothExchangeFields true in diffusionProps" "$half_mesh"
-check_quiet() {
-    local name="$1" edit="$2" unexpected="$3" extra="${4:-}" c="$work/$1"
-    cp -r "$base" "$c"
-    sed -i "$edit" "$c/constant/couplingProperties"
-    [ -n "$extra" ] && (cd "$c" && eval "$extra")
-    (cd "$c" && timeout 120 coarseDemFoam > log 2>&1)
-    local rc=$?
-    if [ $rc -eq 0 ] && grep -q "^End" "$c/log" && ! grep -qF -- "$unexpected" "$c/log"; then
-        echo "PASS: valid setting '$name' runs without: $unexpected"; pass=$((pass+1))
-    else
-        echo "FAIL: valid setting '$name' (exit $rc) did not run without: $unexpected"; fail=$((fail+1))
-    fi
-}
 check_quiet drag_smoothed_alike "$centre_diffusion; s/^diffusionProps .*/diffusionProps { bandwidth 3e-3; smoothExchangeFields true; }/" \
     "dense cells" "$half_mesh"
 check_quiet drag_covers_dense_cells "$centre_diffusion" "dense cells"
@@ -227,10 +234,7 @@ fi
 # sub-dictionary's name) and a bad value (the entry's own name)
 check_np2() {
     local name="$1" edit="$2" c="$work/$1_np2"
-    cp -r "$base" "$c"
-    sed -i "$edit" "$c/constant/couplingProperties"
-    (cd "$c" && decomposePar > log.decomposePar 2>&1 &&
-     timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 coarseDemFoam -parallel > log 2>&1)
+    run_case "$c" "$edit" "" 2
     local rc=$?
     if [ $rc -ne 0 ] && grep -q "^\[0\].*constant/couplingProperties" "$c/log" &&
        grep -q "^\[1\].*constant/couplingProperties" "$c/log" && ! grep -q IOstream "$c/log"; then
@@ -254,10 +258,7 @@ check_runs last_key_twice '$a forceModels ( GidaspowDrag gradPForce );'
 check_np2 bad_value_last_key_twice 's/^couplingInterval .*/couplingInterval 1.5;/; $a forceModels ( GidaspowDrag gradPForce );'
 # the dense cells without drag counted over both ranks (ghost particles' kernels reach across)
 c="$work/drag_misses_dense_cells_np2"
-cp -r "$base" "$c"
-sed -i "$centre_diffusion" "$c/constant/couplingProperties"
-(cd "$c" && eval "$half_mesh" && decomposePar > log.decomposePar 2>&1 &&
- timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 coarseDemFoam -parallel > log 2>&1)
+run_case "$c" "$centre_diffusion" "$half_mesh" 2
 rc=$?
 serial_count=$(grep -o '[0-9]* of the [0-9]* dense cells' "$work/drag_misses_dense_cells/log" | head -1)
 if [ $rc -eq 0 ] && [ -n "$serial_count" ] && grep -qF "$serial_count" "$c/log"; then
