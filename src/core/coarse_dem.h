@@ -184,9 +184,10 @@ int32_t cdc_kernels_outside(const cdc_kernels *k, const int64_t **ids);
  * it reaches into the neighbour rank's cells: not counted, on either rank, even when it leaves the
  * mesh beyond them, e.g. through a wall close to the processor boundary). *count gets their number,
  * *depth the deepest such end beyond the mesh as a fraction of its particle's radius (found by
- * bisection along the axis, to 1e-6; 0 when none), *id the id of that particle (-1 when none). A particle pressed into a DEM wall reaches beyond it by its contact
- * overlap, so small depths are normal; a large one is a particle leaving the mesh. Six point
- * locations per particle: for reports at write times, not for every coupling. */
+ * bisection along the axis, to 1e-6; 0 when none), *id the id of that particle (-1 when none). A
+ * particle pressed into a DEM wall reaches beyond it by its contact overlap, so small depths are
+ * normal; a large one is a particle leaving the mesh. Six point locations per particle: for reports
+ * at write times, not for every coupling. */
 cdc_status cdc_kernels_partly_outside(const cdc_kernels *k, const cdc_particles *p, int32_t *count,
                                       double *depth, int64_t *id);
 
@@ -258,7 +259,8 @@ cdc_status cdc_diffuse_fields(cdc_context *ctx, const cdc_diffusion_params *prm,
  * serial one to the solver tolerance and the total sum(phi V) over all ranks is conserved to
  * round-off; cdc_limit_packing moves excess volume across them as across internal faces. Every rank
  * must call cdc_diffuse (cdc_diffuse_fields with the same n_fields) and cdc_limit_packing the same
- * number of times (the callbacks are collective; cdc_diffuse_fields exchanges once per field). The arrays must outlive the context or the next cdc_context_set_halo. */
+ * number of times (the callbacks are collective; cdc_diffuse_fields exchanges once per field). The
+ * arrays must outlive the context or the next cdc_context_set_halo. */
 typedef struct cdc_halo {
     int32_t n_faces;
     const int32_t *cell;       /* this rank's cell next to each processor face */

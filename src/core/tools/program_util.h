@@ -1,8 +1,8 @@
 /*
  * program_util.h -- helpers shared by the programs built on the core (the benchmarks, the
  * particleDistribution tutorial): a monotonic wall clock, a small fixed-seed random number
- * generator and the median of timings, so that runs are reproducible on every platform. Not part of the core library, which
- * never reads a clock of its own.
+ * generator (so that runs are reproducible on every platform) and the median of timings. Not part
+ * of the core library, which never reads a clock of its own.
  */
 #ifndef CDC_PROGRAM_UTIL_H
 #define CDC_PROGRAM_UTIL_H
