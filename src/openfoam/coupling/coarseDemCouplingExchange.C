@@ -151,13 +151,14 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
             return;
         }
         // K of the local particles and ghosts, already gathered above: no second halo exchange
-        std::vector<double> Kr(exchangeK_);
-        for (double& x : Kr) x /= fluid_.rho;
+        smoothedK_.assign(exchangeK_.begin(), exchangeK_.end());
+        for (double& x : smoothedK_) x /= fluid_.rho;
         scalarField& ksl = Ksl.primitiveFieldRef();
-        demMesh_.check(cdc_spread(k, Kr.data(), 1, ksl.data()), "spread");
+        demMesh_.check(cdc_spread(k, smoothedK_.data(), 1, ksl.data()), "spread");
         // fFluid and Ksl smoothed together, side by side per cell
         const label nCells = mesh_.nCells();
-        std::vector<double> both(size_t(nCells)*4);
+        std::vector<double>& both = smoothedSources_;
+        both.resize(size_t(nCells)*4);
         for (label c = 0; c < nCells; ++c)
         {
             for (int d = 0; d < 3; ++d) both[size_t(c)*4 + d] = f[size_t(c)*3 + d];
