@@ -221,6 +221,19 @@ check_quiet drag_smoothed_alike "$centre_diffusion; s/^diffusionProps .*/diffusi
 check_quiet drag_covers_dense_cells "$centre_diffusion" "dense cells"
 check_warns deltaT_replaced_said 's/^couplingInterval .*/couplingInterval 125;/' \
     "it replaces deltaT 0.001 of"
+# a fixed CFD step too long for the flow (couplingInterval 2500: 0.01 s, Courant 1.5 from the second
+# step on): warned once, naming the entries, and counted (3 of the 4 steps) at the end; the steps
+# below 1 (deltaT_replaced_said: 5e-4 s) counted as none
+check_says courant_counted "fixed step" 's/^couplingInterval .*/couplingInterval 2500;/' \
+    "above 1 in 3 of 4 CFD steps" "sed -i 's/^endTime .*/endTime 0.04;/' system/controlDict"
+n_warned=$(grep -c "Courant number .* > 1 at t = .* take a smaller couplingInterval" "$work/courant_counted/log")
+if [ "$n_warned" = 1 ] && grep -q "above 1 in 0 of 2 CFD steps" "$work/deltaT_replaced_said/log"; then
+    echo "PASS: a Courant number above 1 with a fixed step warned once (not at every step), none counted below 1"
+    pass=$((pass+1))
+else
+    echo "FAIL: a Courant number above 1 with a fixed step warned $n_warned times (once expected), or the" \
+         "run below 1 did not count 0 of 2 steps"; fail=$((fail+1))
+fi
 # a serial run ends without OpenFOAM's "Finalizing MPI, but was initialized elsewhere" warning
 if grep -q "Finalizing MPI" "$work/deltaT_replaced_said/log"; then
     echo "FAIL: serial run warns 'Finalizing MPI' at its end"; fail=$((fail+1))

@@ -114,6 +114,7 @@ int main(int argc, char *argv[])
         if (runTime.writeTime())
         {
             coupling.report(Info);
+            reportCourant(Info);
             coupling.timers().print(Info);
         }
         Info<< endl;
@@ -121,6 +122,7 @@ int main(int argc, char *argv[])
 
     Info<< "End: ";
     coupling.report(Info);
+    reportCourant(Info);
     coupling.timers().print(Info);
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s  ClockTime = " << runTime.elapsedClockTime()
         << " s" << nl << endl;
