@@ -5,7 +5,8 @@ summary.log_segments (wall seconds per start, cut where the continuation started
 run's pauses taken off its wall time and its stage shares), summary.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs), and
 window.py on a synthetic run (errors per averaging window against ones computed here, its refusals),
 etc/runArchive (a stopped run packed and unpacked to continue elsewhere), and the binary bed's
-scripts (pressure samples of every start, runs of one case, the wall-corrected reference).
+scripts (pressure samples of every start, runs of one case, the wall-corrected reference), and
+gasBypass.py (dense cells without a particle centre, fast cells) on four hand-made cells.
 Prints PASS/FAIL per check and "N passed, N failed"."""
 import csv, importlib.util, math, os, random, re, shutil, subprocess, sys, tempfile, time
 
@@ -503,6 +504,31 @@ with tempfile.TemporaryDirectory() as tmp:
     w = summary.run_wall(wrun)
     check(abs(w[0] - 120.5) < 1e-9 and abs(w[1] - 241) < 1e-9 and w[2] == [2],
           "summary.run_wall without a log: wall_seconds.txt summed (%g s, %g core-s, ranks %s)" % w[:3])
+
+    # gasBypass.py on four cells: two dense (one bare, fast), one dilute, one dense with a particle
+    # centre above Courant 1; a uniform (binary-looking) field refused, naming the file
+    brun = os.path.join(tmp, "bypass")
+    os.makedirs(os.path.join(brun, "1"))
+    def field(name, kind, values):
+        body = "\n".join(values)
+        open(os.path.join(brun, "1", name), "w").write(
+            "FoamFile { class vol%sField; }\ninternalField nonuniform List<%s> \n%d\n(\n%s\n)\n;\n"
+            "boundaryField { }\n" % (kind.capitalize(), kind, len(values), body))
+    field("Co", "scalar", ["0.5", "0.9", "0.1", "1.2"])
+    field("alpha", "scalar", ["0.45", "0.5", "0.9", "0.55"])
+    field("alphaPBinned", "scalar", ["0.5", "0", "0", "0.4"])
+    field("U", "vector", ["(0 0 1)", "(0.1 0 3)", "(0 0 0.5)", "(0 0 7)"])
+    tool = os.path.join(top, "validation", "muller", "gasBypass.py")
+    r = subprocess.run([sys.executable, tool, brun, "1"], capture_output=True, text=True)
+    out = r.stdout
+    check(r.returncode == 0 and "Courant number max 1.200" in out and "dense cells (gas fraction < 0.6): 3, 1 without" in out
+          and "3.00 m/s without a particle centre, 4.00 m/s with one" in out
+          and "cells above Courant 1: 1, 1 dense, 0 without" in out and "cells above Courant 0.8: 2, 2 dense, 1 without" in out,
+          "gasBypass.py counts dense cells without a particle centre, their gas velocity, the fast cells: %r" % out[-200:])
+    open(os.path.join(brun, "1", "Co"), "w").write("FoamFile { }\ninternalField uniform 0;\n")
+    r = subprocess.run([sys.executable, tool, brun, "1"], capture_output=True, text=True)
+    check(r.returncode != 0 and "Co: not a nonuniform ASCII field" in r.stderr,
+          "gasBypass.py refuses a field it cannot read, naming it: %r" % r.stderr.strip()[-120:])
 
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)

@@ -1,0 +1,77 @@
+#!/usr/bin/python3
+"""Where the gas streams through a fluidized bed, from one written time of a coarseDemFoam run.
+
+    gasBypass.py CASE TIME [-dense ALPHA]
+
+Reads, in ASCII, CASE/TIME/{Co, alpha, U, alphaPBinned}: the cell Courant number (OpenFOAM's
+CourantNo function object with the run's CFD step as deltaT), the gas fraction, the gas velocity and
+the particle fraction binned by particle centre (binnedParticleFields on). Prints, for the dense
+cells (gas fraction below ALPHA, default 0.6), how many hold no particle centre and their mean
+upward gas velocity against the others', and where the cells above Courant 1 (and 0.8) are.
+The question it answers: does the gas meet drag in the cells where the particles are? With alpha_p
+smoothed and the drag left in the cells of the particle centres, it does not in the dense cells
+that hold none, and streams through them (validation/muller/results/medium/README.md).
+
+A run writes binary fields; in a copy of the case (system, constant and the time):
+    sed -i 's/^writeFormat .*/writeFormat ascii;/; s/^deltaT .*/deltaT <CFD step>;/' system/controlDict
+    foamFormatConvert -time TIME && postProcess -func CourantNo -time TIME
+"""
+import os
+import re
+import sys
+
+import numpy as np
+
+
+def read_internal(path):
+    """The internalField of an ASCII volScalarField or volVectorField as an array (uniform fields:
+    one value per cell is not needed here and is refused)."""
+    text = open(path).read()
+    text = text[text.index("internalField"):]
+    m = re.match(r"internalField\s+nonuniform\s+List<(scalar|vector)>\s*(\d+)\s*\(", text)
+    if not m:
+        sys.exit(f"gasBypass.py: {path}: not a nonuniform ASCII field (convert it with foamFormatConvert)")
+    n = int(m.group(2))
+    body = text[m.end():]
+    if m.group(1) == "scalar":
+        values = np.array(body.split(")", 1)[0].split(), dtype=float)
+    else:
+        values = np.array(re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])[:n], dtype=object)
+        values = np.array([v.split() for v in values], dtype=float)
+    if len(values) != n:
+        sys.exit(f"gasBypass.py: {path}: {len(values)} values for {n} cells")
+    return values
+
+
+def main():
+    args = sys.argv[1:]
+    dense_below = 0.6
+    if "-dense" in args:
+        i = args.index("-dense")
+        dense_below = float(args[i + 1])
+        args = args[:i] + args[i + 2:]
+    if len(args) != 2:
+        sys.exit(__doc__)
+    case, time = args
+    field = {f: read_internal(os.path.join(case, time, f)) for f in ("Co", "alpha", "U", "alphaPBinned")}
+    co, alpha, uz, binned = field["Co"], field["alpha"], field["U"][:, 2], field["alphaPBinned"]
+    dense = alpha < dense_below
+    bare = binned == 0
+    print(f"{case} at t = {time}: {len(alpha)} cells, Courant number max {co.max():.3f}")
+    print(f"dense cells (gas fraction < {dense_below}): {dense.sum()}, {(dense & bare).sum()} without a particle "
+          f"centre ({100 * (dense & bare).sum() / max(dense.sum(), 1):.1f} %)")
+    if (dense & bare).any() and (dense & ~bare).any():
+        print(f"mean upward gas velocity in the dense cells: {uz[dense & bare].mean():.2f} m/s without a particle "
+              f"centre, {uz[dense & ~bare].mean():.2f} m/s with one")
+    for limit in (1.0, 0.8):
+        above = co > limit
+        if not above.any():
+            print(f"cells above Courant {limit:g}: none")
+            continue
+        print(f"cells above Courant {limit:g}: {above.sum()}, {(above & dense).sum()} dense, "
+              f"{(above & bare).sum()} without a particle centre; gas fraction {alpha[above].min():.2f}-"
+              f"{alpha[above].max():.2f}, upward gas velocity {uz[above].min():.2f}-{uz[above].max():.2f} m/s")
+
+
+if __name__ == "__main__":
+    main()
