@@ -505,30 +505,37 @@ with tempfile.TemporaryDirectory() as tmp:
     check(abs(w[0] - 120.5) < 1e-9 and abs(w[1] - 241) < 1e-9 and w[2] == [2],
           "summary.run_wall without a log: wall_seconds.txt summed (%g s, %g core-s, ranks %s)" % w[:3])
 
-    # gasBypass.py on four cells: two dense (one bare, fast), one dilute, one dense with a particle
-    # centre above Courant 1; a uniform (binary-looking) field refused, naming the file
+    # gasBypass.py on five cells: dense with a particle centre (two, one above Courant 1), dense
+    # without (bare), dilute without, and dilute with one and fast; U written as a one-line list. A
+    # binary field and a uniform one refused, naming the file
     brun = os.path.join(tmp, "bypass")
     os.makedirs(os.path.join(brun, "1"))
-    def field(name, kind, values):
-        body = "\n".join(values)
+    def field(name, kind, values, one_line=False):
+        sep = " " if one_line else "\n"
         open(os.path.join(brun, "1", name), "w").write(
-            "FoamFile { class vol%sField; }\ninternalField nonuniform List<%s> \n%d\n(\n%s\n)\n;\n"
-            "boundaryField { }\n" % (kind.capitalize(), kind, len(values), body))
-    field("Co", "scalar", ["0.5", "0.9", "0.1", "1.2"])
-    field("alpha", "scalar", ["0.45", "0.5", "0.9", "0.55"])
-    field("alphaPBinned", "scalar", ["0.5", "0", "0", "0.4"])
-    field("U", "vector", ["(0 0 1)", "(0.1 0 3)", "(0 0 0.5)", "(0 0 7)"])
+            "FoamFile { class vol%sField; }\ninternalField nonuniform List<%s> %s%d%s(%s%s%s)\n;\n"
+            "boundaryField { }\n" % (kind.capitalize(), kind, sep, len(values), sep, sep, sep.join(values), sep))
+    field("Co", "scalar", ["0.5", "0.9", "0.1", "1.2", "0.85"])
+    field("alpha", "scalar", ["0.45", "0.5", "0.9", "0.52", "0.8"])
+    field("alphaPBinned", "scalar", ["0.5", "0", "0", "0.4", "0.1"])
+    field("U", "vector", ["(0 0 1)", "(0.1 0 3)", "(0 0 0.5)", "(0 0 7)", "(0 0 9)"], one_line=True)
     tool = os.path.join(top, "validation", "muller", "gasBypass.py")
     r = subprocess.run([sys.executable, tool, brun, "1"], capture_output=True, text=True)
     out = r.stdout
-    check(r.returncode == 0 and "Courant number max 1.200" in out and "dense cells (gas fraction < 0.6): 3, 1 without" in out
-          and "3.00 m/s without a particle centre, 4.00 m/s with one" in out
-          and "cells above Courant 1: 1, 1 dense, 0 without" in out and "cells above Courant 0.8: 2, 2 dense, 1 without" in out,
-          "gasBypass.py counts dense cells without a particle centre, their gas velocity, the fast cells: %r" % out[-200:])
-    open(os.path.join(brun, "1", "Co"), "w").write("FoamFile { }\ninternalField uniform 0;\n")
-    r = subprocess.run([sys.executable, tool, brun, "1"], capture_output=True, text=True)
-    check(r.returncode != 0 and "Co: not a nonuniform ASCII field" in r.stderr,
-          "gasBypass.py refuses a field it cannot read, naming it: %r" % r.stderr.strip()[-120:])
+    want = ["Courant number max 1.200", "dense cells (gas fraction < 0.6): 3, 1 without",
+            "mean upward gas velocity 3.00 / 4.00 m/s, mean gas fraction 0.500 / 0.485",
+            "gas fraction 0.50-0.55: 1 / 1 cells, upward gas velocity 3.00 / 7.00 m/s",
+            "cells above Courant 1: 1, 1 dense, 0 without", "cells above Courant 0.8: 3, 2 dense, 1 without",
+            "upward gas velocity 3.00-9.00 m/s"]
+    check(r.returncode == 0 and all(w in out for w in want) and out.count("  gas fraction") == 1,
+          "gasBypass.py: dense cells without a particle centre, their gas velocity and fraction (also at the same "
+          "gas fraction), the fast cells: %s" % [w for w in want if w not in out])
+    refused = []
+    for content in (b"FoamFile { }\ninternalField nonuniform List<scalar> 5 \xad\x84\x00", b"FoamFile { }\ninternalField uniform 0;\n"):
+        open(os.path.join(brun, "1", "Co"), "wb").write(content)
+        r = subprocess.run([sys.executable, tool, brun, "1"], capture_output=True, text=True)
+        refused.append(r.returncode != 0 and "Co: not a nonuniform ASCII field" in r.stderr and "Traceback" not in r.stderr)
+    check(all(refused), "gasBypass.py refuses a binary and a uniform field, naming the file: %s" % refused)
 
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)

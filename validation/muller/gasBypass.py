@@ -24,20 +24,24 @@ import numpy as np
 
 
 def read_internal(path):
-    """The internalField of an ASCII volScalarField or volVectorField as an array (uniform fields:
-    one value per cell is not needed here and is refused)."""
-    text = open(path).read()
-    text = text[text.index("internalField"):]
-    m = re.match(r"internalField\s+nonuniform\s+List<(scalar|vector)>\s*(\d+)\s*\(", text)
+    """The internalField of an ASCII volScalarField or volVectorField as an array (a binary or
+    uniform field is refused, naming the file)."""
+    refuse = f"gasBypass.py: {path}: not a nonuniform ASCII field (convert it with foamFormatConvert)"
+    try:
+        text = open(path).read()
+    except UnicodeDecodeError:
+        sys.exit(refuse)
+    at = text.find("internalField")
+    m = re.match(r"internalField\s+nonuniform\s+List<(scalar|vector)>\s*(\d+)\s*\(", text[at:]) if at >= 0 else None
     if not m:
-        sys.exit(f"gasBypass.py: {path}: not a nonuniform ASCII field (convert it with foamFormatConvert)")
+        sys.exit(refuse)
     n = int(m.group(2))
-    body = text[m.end():]
+    body = text[at + m.end():]
     if m.group(1) == "scalar":
         values = np.array(body.split(")", 1)[0].split(), dtype=float)
     else:
-        values = np.array(re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])[:n], dtype=object)
-        values = np.array([v.split() for v in values], dtype=float)
+        # n vectors "(x y z)", then the list's closing parenthesis (on its own line, or not)
+        values = np.array([v.split() for v in re.findall(r"\(([^()]*)\)", body)[:n]], dtype=float)
     if len(values) != n:
         sys.exit(f"gasBypass.py: {path}: {len(values)} values for {n} cells")
     return values
@@ -61,8 +65,17 @@ def main():
     print(f"dense cells (gas fraction < {dense_below}): {dense.sum()}, {(dense & bare).sum()} without a particle "
           f"centre ({100 * (dense & bare).sum() / max(dense.sum(), 1):.1f} %)")
     if (dense & bare).any() and (dense & ~bare).any():
-        print(f"mean upward gas velocity in the dense cells: {uz[dense & bare].mean():.2f} m/s without a particle "
-              f"centre, {uz[dense & ~bare].mean():.2f} m/s with one")
+        print(f"dense cells without / with a particle centre: mean upward gas velocity {uz[dense & bare].mean():.2f} / "
+              f"{uz[dense & ~bare].mean():.2f} m/s, mean gas fraction {alpha[dense & bare].mean():.3f} / "
+              f"{alpha[dense & ~bare].mean():.3f}")
+        # a looser packing lets more gas through whatever the drag (Ergun: permeability ~ e^3/(1-e)^2):
+        # the two compared at the same gas fraction
+        edges = np.arange(0.30, dense_below + 1e-9, 0.05)
+        for lo, hi in zip(edges[:-1], edges[1:]):
+            inbin = dense & (alpha >= lo) & (alpha < hi)
+            if (inbin & bare).any() and (inbin & ~bare).any():
+                print(f"  gas fraction {lo:.2f}-{hi:.2f}: {(inbin & bare).sum()} / {(inbin & ~bare).sum()} cells, "
+                      f"upward gas velocity {uz[inbin & bare].mean():.2f} / {uz[inbin & ~bare].mean():.2f} m/s")
     for limit in (1.0, 0.8):
         above = co > limit
         if not above.any():
