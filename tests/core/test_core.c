@@ -1709,7 +1709,9 @@ static void test_diffusion_fields(void)
 /* The Jacobi preconditioner, which the smoothing takes on meshes whose internal faces are not in
  * OpenFOAM's upper-triangular order (DIC's sweeps need it): the same box with every internal face
  * turned round (owner and neighbour swapped, area negated) smooths to DIC's values within the solver
- * tolerance, conserves to round-off, and gives fields smoothed together the bits each gets alone. */
+ * tolerance, conserves to round-off, and gives fields smoothed together the bits each gets alone.
+ * Not seen here: a wrong preconditioner that is still symmetric positive definite changes only the
+ * number of CG iterations, not the converged values. */
 static void test_diffusion_jacobi(void)
 {
     enum { NX = 12, NY = 10, NZ = 8, NF = 3 };
