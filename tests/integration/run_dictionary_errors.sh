@@ -94,6 +94,27 @@ check_says background_same_kernel "background fields" 's/^backgroundFields .*/ba
     "background fields bigParticle kernel (the void-fraction kernels: the same, built once)"
 check_says background_own_kernel "background fields" 's/^backgroundFields .*/backgroundFields on; backgroundFieldsProps { expansionFactor 3; wallMirror true; }/' \
     "background fields bigParticle kernel, "
+# the fluid's reaction through the background kernels (reactionKernel background), with centre: said at
+# start-up, the balances to round-off serially and on 2 ranks; an unknown value refused with the valid ones
+reaction_bg='s/^voidFractionModel .*/voidFractionModel centre;/; s/^backgroundFields .*/backgroundFields on; backgroundFieldsProps { reactionKernel background; }/'
+check_says reaction_background "background fields" "$reaction_bg" "the fluid's reaction through the background kernels"
+run_case "$work/reaction_background_np2" "$reaction_bg" "" 2
+for c in reaction_background reaction_background_np2; do
+    line=$(grep "^End: Coupling" "$work/$c/log")
+    if echo "$line" | awk '{
+            for (i = 1; i <= NF; ++i) {
+                if ($i == "imbalance") { imb = $(i+1); force = $(i+4) }
+                if ($i == "(rel." && $(i+1) == "err") { vol = $(i+2); sub(/\)/, "", vol) }
+            }
+            exit !(force > 0 && imb / force < 1e-12 && vol < 1e-12) }'; then
+        echo "PASS: reaction through the background kernels ($c): balances to round-off: $(echo "$line" | grep -o 'rel. err [^)]*).*N of [^ ]* N')"
+        pass=$((pass+1))
+    else
+        echo "FAIL: reaction through the background kernels ($c): the End line's balances: ${line:-none}"; fail=$((fail+1))
+    fi
+done
+check reaction_kernel_unknown 's/^backgroundFields .*/backgroundFields on; backgroundFieldsProps { expansionFactor 3; reactionKernel particles; }/' \
+    "valid: voidFraction (default), background"
 
 check unknown_model 's/^voidFractionModel .*/voidFractionModel centroid;/' \
     "unknown void fraction method 'centroid'; valid methods are: centre, divided, bigParticle, twoGrid, gaussian, exact"

@@ -20,7 +20,7 @@ void coarseDemCoupling::sampleFluid
     const volScalarField& nuEff, const volVectorField* DUDt
 )
 {
-    const cdc_kernels* k = backgroundKernels_ ? backgroundKernels_ : voidFraction_.kernels();
+    const cdc_kernels* k = sampleKernels();
     const label n = state_.n;
     // Every field the forces need, gathered in one pass over the kernels and one halo exchange:
     // the fields side by side in one array of cells (each component's sum over a kernel is the
@@ -117,12 +117,13 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
     const label n = particles_.size();
     const bool smooth = voidFraction_.smoothsExchangeFields();
     const bool implicit = implicitDrag_ && !smooth;
-    const cdc_kernels* k = voidFraction_.kernels();
+    const cdc_kernels* k = reactionKernels();
     withGhosts(K_.cdata(), 1, exchangeK_);
     withGhosts(reinterpret_cast<const double*>(state_.v), 3, exchangeV_);
     withGhosts(reinterpret_cast<const double*>(state_.Uf.cdata()), 3, exchangeUf_);
     withGhosts(reinterpret_cast<const double*>(fReact_.cdata()), 3, exchangeF_);
-    const bool correct = implicit && backgroundKernels_;
+    // the drag's fluid velocity came from other kernels than the reaction's: the difference explicit
+    const bool correct = implicit && k != sampleKernels();
     if (correct)
     {
         vectorField uKernel(n);

@@ -186,7 +186,7 @@ void coarseDemCoupling::checkDragCoverage()
     {
         return;
     }
-    const cdc_kernels* k = voidFraction_.kernels();
+    const cdc_kernels* k = reactionKernels();   // where the drag goes into the fluid
     const int32_t* offsets = cdc_kernels_offsets(k);
     const int32_t* cells = cdc_kernels_cells(k);
     const double* weights = cdc_kernels_weights(k);

@@ -19,7 +19,10 @@ static const struct { const char* key; double cdc_kernel_params::*member; unsign
     {"cutoffFactor", &cdc_kernel_params::cutoff_factor, CDC_PARAM_CUTOFF_FACTOR},
 };
 
-cdc_kernel_params readKernelParams(const dictionary& dict, const word& name, const word& method)
+cdc_kernel_params readKernelParams
+(
+    const dictionary& dict, const word& name, const word& method, const wordList& otherKeys
+)
 {
     cdc_kernel_params prm = {};
     const dictionary& props = dict.optionalSubDict(name + "Props");
@@ -27,6 +30,7 @@ cdc_kernel_params readKernelParams(const dictionary& dict, const word& name, con
     wordList valid;
     for (const auto& k : kernelKeys) if (reads & k.bit) valid.append(k.key);
     if (reads & CDC_PARAM_WALL_MIRROR) valid.append("wallMirror");
+    valid.append(otherKeys);   // the caller's own entries (backgroundFieldsProps: reactionKernel)
     if (dict.isDict(name + "Props")) checkPropsKeys(props, valid);
     // read, and say what the method runs with, so that a user sees a default taken
     Info<< (name == method ? word("voidFractionModel") : name) << " " << method << ":";
