@@ -34,6 +34,7 @@ DEFAULTS = {
     "EXPANSION_FACTOR": "5",
     "ALPHA_MIN": "0.3",
     "BACKGROUND_FIELDS": "off",
+    "REACTION_KERNEL": "voidFraction",
     "DEM_MAX_IMPACT_VELOCITY": "1",
     "RHO_F": "1000",
     "NU_F": "1e-06",
