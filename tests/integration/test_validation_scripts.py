@@ -8,7 +8,7 @@ etc/runArchive (a stopped run packed and unpacked to continue elsewhere), and th
 scripts (pressure samples of every start, runs of one case, the wall-corrected reference), and
 gasBypass.py (dense cells without a particle centre, fast cells) on four hand-made cells.
 Prints PASS/FAIL per check and "N passed, N failed"."""
-import csv, importlib.util, math, os, random, re, shutil, subprocess, sys, tempfile, time
+import csv, importlib.util, math, os, random, re, shutil, struct, subprocess, sys, tempfile, time
 
 top = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 def load(name):
@@ -530,12 +530,68 @@ with tempfile.TemporaryDirectory() as tmp:
     check(r.returncode == 0 and all(w in out for w in want) and out.count("  gas fraction") == 1,
           "gasBypass.py: dense cells without a particle centre, their gas velocity and fraction (also at the same "
           "gas fraction), the fast cells: %s" % [w for w in want if w not in out])
+    # the same Courant numbers written binary (writeFormat binary) read alike; a binary list cut
+    # short, and a uniform gas fraction (which would leave the number of cells unknown), refused
+    co = [0.5, 0.9, 0.1, 1.2, 0.85]
+    def binary_co(values, count):
+        return (b'FoamFile { format binary; arch "LSB;label=32;scalar=64"; class volScalarField; }\n'
+                b"internalField nonuniform List<scalar> %d(" % count + struct.pack("<%dd" % len(values), *values)
+                + b")\n;\nboundaryField { }\n")
+    open(os.path.join(brun, "1", "Co"), "wb").write(binary_co(co, 5))
+    r = subprocess.run([sys.executable, tool, brun, "1"], capture_output=True, text=True)
+    check(r.returncode == 0 and r.stdout == out, "gasBypass.py reads a binary field as its ascii twin: %r" % r.stderr[-200:])
     refused = []
-    for content in (b"FoamFile { }\ninternalField nonuniform List<scalar> 5 \xad\x84\x00", b"FoamFile { }\ninternalField uniform 0;\n"):
-        open(os.path.join(brun, "1", "Co"), "wb").write(content)
+    for name, content, why in (("Co", binary_co(co[:4], 5), "Co: a binary list of 5 entries that does not end"),
+                               ("alpha", b"FoamFile { }\ninternalField uniform 0.5;\n", "alpha: a uniform internalField")):
+        keep = open(os.path.join(brun, "1", name), "rb").read()
+        open(os.path.join(brun, "1", name), "wb").write(content)
         r = subprocess.run([sys.executable, tool, brun, "1"], capture_output=True, text=True)
-        refused.append(r.returncode != 0 and "Co: not a nonuniform ASCII field" in r.stderr and "Traceback" not in r.stderr)
-    check(all(refused), "gasBypass.py refuses a binary and a uniform field, naming the file: %s" % refused)
+        refused.append(r.returncode != 0 and why in r.stderr and "Traceback" not in r.stderr)
+        open(os.path.join(brun, "1", name), "wb").write(keep)
+    check(all(refused), "gasBypass.py refuses a binary list cut short and a uniform gas fraction, naming the file: %s"
+          % refused)
+
+# etc/python/foam_fields.py, the one reader of written fields and clouds: a vector field ascii,
+# binary and gzipped (writeCompression) alike, a uniform one, zero-size lists, and the positions of
+# a cloud ascii and binary; what does not fit refused naming the file
+foam_fields = load_path("etc/python/foam_fields.py", "foam_fields")
+with tempfile.TemporaryDirectory() as tmp:
+    vec = [(0.1, -2.0, 3e-5), (4.0, 5.5, -6.25), (7.0, 8.0, 9.0)]
+    head = b'FoamFile { version 2.0; format %s; arch "LSB;label=32;scalar=64"; class volVectorField; }\n'
+    ascii_vec = head % b"ascii" + b"internalField nonuniform List<vector> 3\n(\n" + \
+        b"\n".join(b"(%r %r %r)" % v for v in vec) + b"\n)\n;\nboundaryField { }\n"
+    binary_vec = head % b"binary" + b"internalField nonuniform List<vector> 3(" + \
+        struct.pack("<9d", *[c for v in vec for c in v]) + b")\n;\nboundaryField { }\n"
+    import gzip
+    for name, data in (("Ua", ascii_vec), ("Ub", binary_vec)):
+        open(os.path.join(tmp, name), "wb").write(data)
+    open(os.path.join(tmp, "Uz.gz"), "wb").write(gzip.compress(binary_vec))
+    got = [foam_fields.read_internal_field(os.path.join(tmp, n)).tolist() for n in ("Ua", "Ub", "Uz")]
+    check(all(g == [list(v) for v in vec] for g in got), "foam_fields: a vector field ascii, binary and gzipped: %s" % got[1])
+    open(os.path.join(tmp, "Uu"), "wb").write(head % b"ascii" + b"internalField uniform (1 2 3);\n")
+    open(os.path.join(tmp, "a0"), "wb").write(head % b"binary" + b"internalField nonuniform List<scalar> 0();\n")
+    uni = foam_fields.read_internal_field(os.path.join(tmp, "Uu"), 2).tolist()
+    check(uni == [[1, 2, 3], [1, 2, 3]] and foam_fields.read_internal_field(os.path.join(tmp, "a0")).shape == (0,),
+          "foam_fields: a uniform vector field given the number of cells, an empty list: %s" % uni)
+    pos = [(0.01, 0.02, 0.03), (-0.5, 0.25, 1.0)]
+    phead = b'FoamFile { format %s; arch "LSB;label=32;scalar=64"; class Cloud<basicParticle>; object positions; }\n'
+    open(os.path.join(tmp, "pa"), "wb").write(phead % b"ascii" + b"\n2\n(\n" +
+                                              b"".join(b"(%r %r %r) %d\n" % (v + (k,)) for k, v in enumerate(pos)) + b")\n")
+    open(os.path.join(tmp, "pb"), "wb").write(phead % b"binary" + b"\n2\n(" +
+                                              b"".join(b"\n(" + struct.pack("<3di", *(v + (k,))) + b")" for k, v in enumerate(pos)) + b"\n)\n")
+    got = [foam_fields.read_cloud_positions(os.path.join(tmp, n)).tolist() for n in ("pa", "pb")]
+    check(all(g == [list(v) for v in pos] for g in got), "foam_fields: a cloud's positions ascii and binary: %s" % got)
+    refused = []
+    for name, call in (("Uu", lambda p: foam_fields.read_internal_field(p)),
+                       ("pa", lambda p: foam_fields.read_internal_field(p)),
+                       ("missing", lambda p: foam_fields.read_internal_field(p))):
+        try:
+            call(os.path.join(tmp, name))
+            refused.append(False)
+        except foam_fields.FieldFormatError as e:
+            refused.append(str(e).startswith(os.path.join(tmp, name) + ":"))
+    check(all(refused), "foam_fields refuses a uniform field without the number of cells, a file without "
+          "internalField and a missing file, naming it: %s" % refused)
 
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)

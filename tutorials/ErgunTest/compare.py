@@ -9,7 +9,12 @@ volume-weighted means only because this mesh's cells are all equal: on a graded 
 by cell volume (tutorials/packedBedCylinder/compare.py does). Appends to results/summary.csv.
 Usage: compare.py <time dir> <U> <wall seconds> [model type, default A]
 """
-import os, re, sys
+import os, sys
+
+# the project's reader of written fields: etc/python (COARSEDEM_DIR: this file may run from a copy of the tutorial)
+TOP = os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+sys.path.insert(0, os.path.join(TOP, "etc", "python"))
+from foam_fields import FieldFormatError, read_internal_field  # noqa: E402
 
 tdir, U, wall = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
 model = sys.argv[4] if len(sys.argv) > 4 else "A"
@@ -18,14 +23,10 @@ mu = rho * nu
 nx, ny, nz, dz = 10, 10, 50, 1.1e-3
 
 def read_scalar(path):
-    txt = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(", txt)
-    if m:
-        n = int(m.group(1))
-        vals = txt[m.end():].split(")")[0].split()
-        return [float(v) for v in vals[:n]]
-    m = re.search(r"internalField\s+uniform\s+([-+0-9.eE]+)", txt)
-    return [float(m.group(1))] * (nx * ny * nz)
+    try:
+        return read_internal_field(path, nx * ny * nz)
+    except FieldFormatError as e:
+        sys.exit(f"compare.py: {e}")
 
 p = read_scalar(os.path.join(tdir, "p"))
 alpha = read_scalar(os.path.join(tdir, "alpha"))

@@ -93,6 +93,8 @@ def _load(path, name):
 _mono = _load(os.path.join(TOP, "tutorials", "liquidFluidizedBed", "postprocess.py"), "liquid_bed_postprocess")
 read_dumps, read_fv, batch_sem, NB = _mono.read_dumps, _mono.read_fv, _mono.batch_sem, _mono.NB
 ref = _load(os.path.join(TOP, "validation", "khan", "references.py"), "khan_references")
+# the project's reader of written fields (ascii or binary)
+_fields = _load(os.path.join(TOP, "etc", "python", "foam_fields.py"), "foam_fields")
 # the wall time and stage timers of a run from its solver log, as the Mueller validation reads them
 _summary = _load(os.path.join(TOP, "validation", "muller", "summary.py"), "muller_summary")
 run_wall, stage_times, NOT_COUPLING = _summary.run_wall, _summary.stage_times, _summary.NOT_COUPLING
@@ -178,17 +180,8 @@ def layer(z, prof, batch_profiles):
 
 
 def read_internal_field(path):
-    """The internalField of an ascii volScalarField (uniform or nonuniform), as an array."""
-    with open(path) as f:
-        text = f.read()
-    m = re.search(r"internalField\s+uniform\s+([-+0-9.eE]+)\s*;", text)
-    if m:
-        return np.full(NX * NY * NZ, float(m.group(1)))
-    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(", text)
-    if not m:
-        raise ValueError("%s: no ascii scalar internalField" % path)
-    n = int(m.group(1))
-    return np.array(text[m.end():].split(")", 1)[0].split(), float)[:n]
+    """The internalField of a volScalarField on the 10 x 10 x 120 block, ascii or binary, as an array."""
+    return _fields.read_internal_field(path, NX * NY * NZ)
 
 
 def layers_of(field):

@@ -12,9 +12,12 @@ cell of their centre at z = 16.4 mm (results/, from profiles.py) with its batch-
 the MR data of the same inlet velocity (validation/muller/data). Reads OpenFOAM's ascii and binary
 formats. A parallel run is read at its reconstructed last write time (Allrun runs reconstructPar).
 """
-import os, re, struct, sys
+import os, re, sys
 
 here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(here, "..", ".."), "etc",
+                                "python"))  # the project's reader of written fields
+from foam_fields import FieldFormatError, read_cloud_positions, read_internal_field  # noqa: E402
 DATA = os.path.join(here, "..", "..", "validation", "muller", "data")
 
 
@@ -26,25 +29,6 @@ def last_time(run):
     return max(times, key=float)
 
 
-def read_list(path, header, width, record):
-    """The n entries of an OpenFOAM list after `header` (a regex ending before the count): ascii or
-    binary; width numbers each; record: the binary bytes of one entry (with its delimiters)."""
-    b = open(path, "rb").read()
-    m = re.search(header + rb"\s*(\d+)\s*\(", b)
-    if not m:
-        sys.exit(f"bedPicture.py: {path}: no list found")
-    n, start = int(m.group(1)), m.end()
-    if re.search(rb"format\s+binary", b[:m.start()]):
-        out = []
-        for k in range(n):
-            off = start + record[0] + k * record[1]
-            out.append(struct.unpack_from(f"<{width}d", b, off))
-        return out
-    body = b[start:].decode("ascii", "replace")
-    nums = [float(x) for x in re.findall(r"[-+]?\d*\.?\d+(?:[eE][-+]?\d+)?", body)[: n * record[2]]]
-    return [tuple(nums[k * record[2]: k * record[2] + width]) for k in range(n)]
-
-
 def main():
     args = sys.argv[1:]
     if len(args) < 2:
@@ -52,10 +36,11 @@ def main():
     run, U = args[0], args[1]
     out = args[args.index("-o") + 1] if "-o" in args else os.path.join(run, "results", "bed.png")
     t = last_time(run)
-    # positions: binary records are "\n(" + 3 doubles + a label + ")"; ascii "(x y z) cell"
-    pos = read_list(os.path.join(run, t, "lagrangian", "particles", "positions"), rb"\n", 3, (2, 31, 4))
-    alpha = [a[0] for a in read_list(os.path.join(run, t, "alpha"), rb"internalField\s+nonuniform\s+List<scalar>", 1,
-                                       (0, 8, 1))]
+    try:
+        pos = read_cloud_positions(os.path.join(run, t, "lagrangian", "particles", "positions"))
+        alpha = read_internal_field(os.path.join(run, t, "alpha"))
+    except FieldFormatError as e:
+        sys.exit(f"bedPicture.py: {e}")
     block = open(os.path.join(run, "system", "blockMeshDict")).read()
     nx, ny, nz = map(int, re.search(r"hex\s*\([^)]*\)\s*\((\d+)\s+(\d+)\s+(\d+)\)", block).groups())
     if len(alpha) != nx * ny * nz:

@@ -9,7 +9,12 @@ the core's small cells more). Also reports eps in the ring of cells next to the 
 core, the wall's effect on the measured field. Appends to results/summary.csv.
 Usage: compare.py <time dir> <U> <method> <np> <wall seconds>
 """
-import os, re, sys
+import os, sys
+
+# the project's reader of written fields: etc/python (COARSEDEM_DIR: this file may run from a copy of the tutorial)
+TOP = os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+sys.path.insert(0, os.path.join(TOP, "etc", "python"))
+from foam_fields import FieldFormatError, read_internal_field  # noqa: E402
 
 tdir, U, method, np_, wall = sys.argv[1], float(sys.argv[2]), sys.argv[3], sys.argv[4], float(sys.argv[5])
 rho, nu, d, g = 1.2, 1.5e-5, 2e-3, 9.81
@@ -17,16 +22,11 @@ mu = rho * nu
 z1, z2 = 0.021, 0.067
 R_wall_ring = 0.0096           # cells centred beyond this radius: the ring next to the 11 mm wall
 
-def internal(path, ncomp=1):
-    txt = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<(scalar|vector)>\s*(\d+)\s*\(", txt)
-    if not m:
-        raise SystemExit(f"compare.py: {path}: no nonuniform internalField")
-    n = int(m.group(2))
-    body = txt[m.end():]
-    if m.group(1) == "vector":
-        return [tuple(map(float, v.split())) for v in re.findall(r"\(([^()]*)\)", body)[:n]]
-    return [float(v) for v in body.split(")")[0].split()[:n]]
+def internal(path):
+    try:
+        return read_internal_field(path).tolist()
+    except FieldFormatError as e:
+        raise SystemExit(f"compare.py: {e}")
 
 V = internal("0/V")
 C = internal("0/C")

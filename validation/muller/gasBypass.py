@@ -3,7 +3,7 @@
 
     gasBypass.py CASE TIME [-dense ALPHA]
 
-Reads, in ASCII, CASE/TIME/{Co, alpha, U, alphaPBinned}: the cell Courant number (OpenFOAM's
+Reads CASE/TIME/{Co, alpha, U, alphaPBinned} (ascii or binary): the cell Courant number (OpenFOAM's
 CourantNo function object with the run's CFD step as deltaT), the gas fraction, the gas velocity and
 the particle fraction binned by particle centre (binnedParticleFields on). Prints, for the dense
 cells (gas fraction below ALPHA, default 0.6), how many hold no particle centre and their mean
@@ -12,39 +12,18 @@ The question it answers: does the gas meet drag in the cells where the particles
 smoothed and the drag left in the cells of the particle centres, it does not in the dense cells
 that hold none, and streams through them (validation/muller/results/medium/README.md).
 
-A run writes binary fields; in a copy of the case (system, constant and the time):
-    sed -i 's/^writeFormat .*/writeFormat ascii;/; s/^deltaT .*/deltaT <CFD step>;/' system/controlDict
-    foamFormatConvert -time TIME && postProcess -func CourantNo -time TIME
+The Courant number is not written by the run; in a copy of the case (system, constant and the time):
+    sed -i 's/^deltaT .*/deltaT <CFD step>;/' system/controlDict
+    postProcess -func CourantNo -time TIME
 """
 import os
-import re
 import sys
 
 import numpy as np
 
-
-def read_internal(path):
-    """The internalField of an ASCII volScalarField or volVectorField as an array (a binary or
-    uniform field is refused, naming the file)."""
-    refuse = f"gasBypass.py: {path}: not a nonuniform ASCII field (convert it with foamFormatConvert)"
-    try:
-        text = open(path).read()
-    except UnicodeDecodeError:
-        sys.exit(refuse)
-    at = text.find("internalField")
-    m = re.match(r"internalField\s+nonuniform\s+List<(scalar|vector)>\s*(\d+)\s*\(", text[at:]) if at >= 0 else None
-    if not m:
-        sys.exit(refuse)
-    n = int(m.group(2))
-    body = text[at + m.end():]
-    if m.group(1) == "scalar":
-        values = np.array(body.split(")", 1)[0].split(), dtype=float)
-    else:
-        # n vectors "(x y z)", then the list's closing parenthesis (on its own line, or not)
-        values = np.array([v.split() for v in re.findall(r"\(([^()]*)\)", body)[:n]], dtype=float)
-    if len(values) != n:
-        sys.exit(f"gasBypass.py: {path}: {len(values)} values for {n} cells")
-    return values
+TOP = os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+sys.path.insert(0, os.path.join(TOP, "etc", "python"))
+from foam_fields import FieldFormatError, read_internal_field  # noqa: E402
 
 
 def main():
@@ -57,7 +36,13 @@ def main():
     if len(args) != 2:
         sys.exit(__doc__)
     case, time = args
-    field = {f: read_internal(os.path.join(case, time, f)) for f in ("Co", "alpha", "U", "alphaPBinned")}
+    try:
+        # the gas fraction gives the number of cells (a uniform alpha would not: refused)
+        field = {"alpha": read_internal_field(os.path.join(case, time, "alpha"))}
+        for f in ("Co", "U", "alphaPBinned"):
+            field[f] = read_internal_field(os.path.join(case, time, f), len(field["alpha"]))
+    except FieldFormatError as e:
+        sys.exit(f"gasBypass.py: {e}")
     co, alpha, uz, binned = field["Co"], field["alpha"], field["U"][:, 2], field["alphaPBinned"]
     dense = alpha < dense_below
     bare = binned == 0

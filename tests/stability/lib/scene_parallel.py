@@ -22,7 +22,7 @@
     scene_parallel.py refused - <np2 case> <scene> [message]
         The np = 2 run must stop with the message (default: the decomposition mismatch).
 """
-import math, os, re, sys
+import math, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stablib
@@ -137,8 +137,10 @@ def reconstructed(case, t, name):
                        stdout=open(os.path.join(case, "log.reconstructPar"), "w"), stderr=subprocess.STDOUT)
     if not os.path.exists(os.path.join(case, t, name)):
         return None
-    kind, v = stablib._parse_internal(os.path.join(case, t, name), 1)
-    return v if kind == "list" else None
+    try:
+        return stablib.foam_fields.read_internal_field(os.path.join(case, t, name)).tolist()
+    except stablib.foam_fields.FieldFormatError:  # uniform: not a reconstructed field to compare
+        return None
 
 
 if __name__ == "__main__":

@@ -14,7 +14,7 @@ With --stiff: the scene is "particle response time far below the CFD step": repo
 the --explicit-case) whether the particle stayed, blew up or was lost, and its final velocity against
 the terminal velocity; PASS only if the case stays within tol of the ODE (i.e. stable and accurate).
 """
-import argparse, math, os, sys
+import argparse, os, sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)

@@ -9,7 +9,10 @@
     params(case)              case.params written by mkcase.py
     check_run(case, ...)      the common checks of a solver-level scene: (ok, summary, details)
 """
-import glob, math, os, re
+import glob, math, os, re, sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "etc", "python"))
+import foam_fields  # noqa: E402  the project's reader of written fields
 
 NUM = r"([-+]?(?:\d+\.?\d*(?:[eE][-+]?\d+)?|nan|inf|-nan|-inf))"
 COUPLING = re.compile(
@@ -72,33 +75,15 @@ def write_times(case):
     return _time_dirs(base)
 
 
-def _parse_internal(path, ncomp):
-    s = open(path, errors="replace").read()
-    i = s.find("internalField")
-    s = s[i:]
-    m = re.match(r"internalField\s+uniform\s+(\([^)]*\)|\S+?);", s)
-    if m:
-        v = m.group(1)
-        vals = [float(x) for x in v.strip("()").split()]
-        return ("uniform", vals if ncomp == 3 else vals[0])
-    m = re.match(r"internalField\s+nonuniform\s+List<\w+>\s*(\d+)\s*\(", s)
-    if not m:
-        # zero-size lists are written "List<scalar> 0()"
-        if re.match(r"internalField\s+nonuniform\s+List<\w+>\s*0\s*\(\s*\)", s):
-            return ("list", [])
-        raise ValueError("cannot parse internalField of " + path)
-    n = int(m.group(1))
-    body = s[m.end():]
-    vals = []
-    if ncomp == 1:
-        toks = body.split(None, n)
-        vals = [float(t) for t in toks[:n]]
-    else:
-        for k, mm in enumerate(re.finditer(r"\(([^()]*)\)", body)):
-            if k >= n:
-                break
-            vals.append(tuple(float(t) for t in mm.group(1).split()))
-    return ("list", vals)
+def _read_internal(path, ncomp):
+    """The internalField of one file (etc/python/foam_fields.py: ascii or binary) as a list, of floats
+    or of (x, y, z); a uniform field as its one value (the suite compares written fields cell by cell
+    and reads no mesh: a uniform field counts as one entry, per processor)."""
+    try:
+        v = foam_fields.read_internal_field(path)
+    except foam_fields.FieldFormatError:
+        v = foam_fields.read_internal_field(path, 1)
+    return [tuple(x) for x in v.tolist()] if ncomp == 3 else v.tolist()
 
 
 def _field_paths(case, time, name):
@@ -111,16 +96,14 @@ def _field_paths(case, time, name):
 def read_scalar_field(case, time, name):
     vals = []
     for p in _field_paths(case, time, name):
-        kind, v = _parse_internal(p, 1)
-        vals.extend([v] if kind == "uniform" else v)
+        vals.extend(_read_internal(p, 1))
     return vals
 
 
 def read_vector_field(case, time, name):
     vals = []
     for p in _field_paths(case, time, name):
-        kind, v = _parse_internal(p, 3)
-        vals.extend([tuple(v)] if kind == "uniform" else v)
+        vals.extend(_read_internal(p, 3))
     return vals
 
 

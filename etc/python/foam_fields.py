@@ -1,0 +1,118 @@
+"""Reading what OpenFOAM writes, for the project's post-processing scripts and tests: one reader of
+a field's internalField and of a particle cloud's positions, in both of OpenFOAM's formats.
+
+    read_internal_field(path, n_cells=None)   numpy array, (n,) for a volScalarField, (n, 3) for a
+                                              volVectorField; ascii or binary (writeFormat), plain or
+                                              gzipped (writeCompression: path or path.gz)
+    read_cloud_positions(path)                numpy array (n, 3) of a cloud's `positions` file
+                                              (entries "(x y z) cell")
+
+A uniform field is returned as n_cells copies of its value and needs n_cells (the reader does not
+read the mesh). What cannot be read raises FieldFormatError, whose message names the file; a
+script turns it into its own error (`sys.exit(f"myscript.py: {e}")`).
+
+Scripts find this folder through COARSEDEM_DIR (etc/bashrc sets it) or their place in the tree.
+"""
+import gzip
+import os
+import re
+
+import numpy as np
+
+__all__ = ["FieldFormatError", "read_internal_field", "read_cloud_positions"]
+
+
+class FieldFormatError(ValueError):
+    """A file that is not the field or list it was read as; the message names the file."""
+
+
+def _read_bytes(path):
+    """The file's bytes; OpenFOAM's compressed form path.gz when only that exists."""
+    if not os.path.exists(path) and os.path.exists(path + ".gz"):
+        path += ".gz"
+    try:
+        with open(path, "rb") as f:
+            data = f.read()
+    except OSError as e:
+        raise FieldFormatError(f"{path}: cannot be read ({e.strerror})") from None
+    return gzip.decompress(data) if path.endswith(".gz") else data
+
+
+def _header(data):
+    """(binary?, bytes per scalar, bytes per label) from the FoamFile header's format and arch."""
+    head = data[:data.find(b"}") + 1] if data.startswith(b"FoamFile") or b"FoamFile" in data[:2048] else b""
+    binary = re.search(rb"format\s+binary\s*;", head) is not None
+    arch = re.search(rb'arch\s+"([^"]*)"', head)
+    scalar, label = 8, 4
+    if arch:
+        s = re.search(rb"scalar=(\d+)", arch.group(1))
+        lb = re.search(rb"label=(\d+)", arch.group(1))
+        scalar = int(s.group(1)) // 8 if s else scalar
+        label = int(lb.group(1)) // 8 if lb else label
+    return binary, scalar, label
+
+
+def _numbers(text, count):
+    """The first `count` numbers of ascii text, parentheses ignored."""
+    tokens = text.replace(b"(", b" ").replace(b")", b" ").split(None, count)[:count]
+    try:
+        return np.array(tokens, dtype=float)
+    except ValueError:
+        return np.array([], dtype=float)
+
+
+def read_internal_field(path, n_cells=None):
+    data = _read_bytes(path)
+    binary, scalar, _ = _header(data)
+    at = data.find(b"internalField")
+    if at < 0:
+        raise FieldFormatError(f"{path}: no internalField")
+    body = data[at:]
+    m = re.match(rb"internalField\s+uniform\s+(\([^)]*\)|[^\s;]+)\s*;", body)
+    if m:
+        value = _numbers(m.group(1), 3)
+        if n_cells is None:
+            raise FieldFormatError(f"{path}: a uniform internalField (the reader needs the number of cells)")
+        return np.tile(value, (n_cells, 1)) if len(value) == 3 else np.full(n_cells, value[0])
+    m = re.match(rb"internalField\s+nonuniform\s+List<(scalar|vector)>\s*(\d+)\s*\(", body)
+    if not m:
+        raise FieldFormatError(f"{path}: internalField is neither uniform nor a List<scalar> or List<vector>")
+    width = 1 if m.group(1) == b"scalar" else 3
+    n = int(m.group(2))
+    if binary:
+        size = n * width * scalar
+        raw = body[m.end():m.end() + size]
+        if len(raw) != size or body[m.end() + size:m.end() + size + 1] != b")":
+            raise FieldFormatError(f"{path}: a binary list of {n} entries that does not end where it should")
+        values = np.frombuffer(raw, dtype=np.float64 if scalar == 8 else np.float32).astype(float)
+    else:
+        values = _numbers(body[m.end():], n * width)
+        if len(values) != n * width:
+            raise FieldFormatError(f"{path}: {len(values) // width} values read for a list of {n}")
+    return values.reshape(n, 3) if width == 3 else values
+
+
+def read_cloud_positions(path):
+    """The (x, y, z) of every particle of a cloud's positions file (entries "(x y z) cell")."""
+    data = _read_bytes(path)
+    binary, scalar, label = _header(data)
+    end_of_header = data.find(b"}") + 1 if b"FoamFile" in data[:2048] else 0
+    m = re.compile(rb"\s(\d+)\s*\(").search(data, end_of_header)
+    if not m:
+        raise FieldFormatError(f"{path}: no list of positions")
+    n, start = int(m.group(1)), m.end()
+    if not binary:
+        values = _numbers(data[start:], 4 * n)
+        if len(values) != 4 * n:
+            raise FieldFormatError(f"{path}: {len(values) // 4} positions read for a list of {n}")
+        return values.reshape(n, 4)[:, :3]
+    # binary: every entry on its own line, "\n(" + 3 scalars + a label + ")"
+    record = 2 + 3 * scalar + label + 1
+    if len(data) < start + n * record:
+        raise FieldFormatError(f"{path}: a binary list of {n} positions that is cut short")
+    dtype = np.dtype([("newline", "S1"), ("open", "S1"), ("xyz", "<f8" if scalar == 8 else "<f4", 3),
+                      ("cell", f"<i{label}"), ("close", "S1")])
+    rows = np.frombuffer(data, dtype=dtype, count=n, offset=start)
+    if n and not (np.all(rows["open"] == b"(") and np.all(rows["close"] == b")")):
+        raise FieldFormatError(f"{path}: binary positions not in the (x y z) cell layout")
+    return rows["xyz"].astype(float)
