@@ -39,8 +39,10 @@ def _read_bytes(path):
 
 
 def _header(data):
-    """(binary?, bytes per scalar, bytes per label) from the FoamFile header's format and arch."""
-    head = data[:data.find(b"}") + 1] if data.startswith(b"FoamFile") or b"FoamFile" in data[:2048] else b""
+    """(binary?, bytes per scalar, bytes per label, offset after the header) from the FoamFile
+    header's format and arch; a file without a header reads as ascii of doubles and 32-bit labels."""
+    end = data.find(b"}") + 1 if b"FoamFile" in data[:2048] else 0
+    head = data[:end]
     binary = re.search(rb"format\s+binary\s*;", head) is not None
     arch = re.search(rb'arch\s+"([^"]*)"', head)
     scalar, label = 8, 4
@@ -49,7 +51,7 @@ def _header(data):
         lb = re.search(rb"label=(\d+)", arch.group(1))
         scalar = int(s.group(1)) // 8 if s else scalar
         label = int(lb.group(1)) // 8 if lb else label
-    return binary, scalar, label
+    return binary, scalar, label, end
 
 
 def _numbers(text, count):
@@ -63,7 +65,7 @@ def _numbers(text, count):
 
 def read_internal_field(path, n_cells=None):
     data = _read_bytes(path)
-    binary, scalar, _ = _header(data)
+    binary, scalar, _, _ = _header(data)
     at = data.find(b"internalField")
     if at < 0:
         raise FieldFormatError(f"{path}: no internalField")
@@ -95,8 +97,7 @@ def read_internal_field(path, n_cells=None):
 def read_cloud_positions(path):
     """The (x, y, z) of every particle of a cloud's positions file (entries "(x y z) cell")."""
     data = _read_bytes(path)
-    binary, scalar, label = _header(data)
-    end_of_header = data.find(b"}") + 1 if b"FoamFile" in data[:2048] else 0
+    binary, scalar, label, end_of_header = _header(data)
     m = re.compile(rb"\s(\d+)\s*\(").search(data, end_of_header)
     if not m:
         raise FieldFormatError(f"{path}: no list of positions")

@@ -79,10 +79,7 @@ def _read_internal(path, ncomp):
     """The internalField of one file (etc/python/foam_fields.py: ascii or binary) as a list, of floats
     or of (x, y, z); a uniform field as its one value (the suite compares written fields cell by cell
     and reads no mesh: a uniform field counts as one entry, per processor)."""
-    try:
-        v = foam_fields.read_internal_field(path)
-    except foam_fields.FieldFormatError:
-        v = foam_fields.read_internal_field(path, 1)
+    v = foam_fields.read_internal_field(path, n_cells=1)  # n_cells is used by a uniform field only
     return [tuple(x) for x in v.tolist()] if ncomp == 3 else v.tolist()
 
 
