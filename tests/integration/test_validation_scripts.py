@@ -3,7 +3,8 @@
 profiles.drop_superseded (samples of a stopped segment re-sampled by its continuation) and
 summary.log_segments (wall seconds per start, cut where the continuation started, MPI ranks; a
 run's pauses taken off its wall time and its stage shares), summary.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs), and
-window.py on a synthetic run (errors per averaging window against ones computed here, its refusals),
+window.py on a synthetic run (errors per averaging window against ones computed here, its refusals;
+the same run with its samples folded by compactSamples.py),
 etc/runArchive (a stopped run packed and unpacked to continue elsewhere), and the binary bed's
 scripts (pressure samples of every start, runs of one case, the wall-corrected reference), and
 gasBypass.py (dense cells without a particle centre, fast cells) on four hand-made cells.
@@ -249,6 +250,39 @@ with tempfile.TemporaryDirectory() as tmp:
     check(r.returncode == 0 and after == before[:1] + gone + before[1:],
           "window.py -add: the earlier rows of a run not given kept, the run given measured again (%d + %d rows)"
           % (len(gone), len(after) - 1 - len(gone)))
+
+    # compactSamples.py: the same run, its samples up to its last complete write (0.3 s of 2 ranks;
+    # 0.4 incomplete on one) folded in two steps into a store per function: window.py gives the rows
+    # of the folders (to 1e-9), only the folders after 0.3 are left, and a time after 0.3 is refused
+    comp = os.path.join(tmp, "compacted", os.path.basename(run))
+    shutil.copytree(run, comp)
+    for rank, ts in (("processor0", ("0", "0.2", "0.3", "0.4")), ("processor1", ("0", "0.2", "0.3"))):
+        for t in ts:
+            os.makedirs(os.path.join(comp, rank, t, "uniform"))
+    compact = os.path.join(top, "validation", "muller", "compactSamples.py")
+    def compact_run(*args):
+        return subprocess.run([sys.executable, compact, comp] + list(args), capture_output=True, text=True)
+    r1, r2 = compact_run("-until", "0.2", "-from", "0.1"), compact_run("-until", "0.3")
+    left = sorted(float(t) for t in os.listdir(os.path.join(comp, "postProcessing", "depthProfiles")) if t[0].isdigit())
+    wout = os.path.join(tmp, "wout_compacted")
+    r = window(comp, "-tstart", "0.02", "-step", "0.07", "-U", "0.9", "-data", data, "-o", wout)
+    crows = list(csv.DictReader(open(os.path.join(wout, "window.csv")))) if r.returncode == 0 else []
+    base_rows = [rw for rw in csv.DictReader(open(os.path.join(out, "window.csv"))) if rw["run"] == "synth_dx1_U0.9_test"]
+    same = len(crows) == len(base_rows) > 0 and all(
+        (a["window_s"], a["quantity"], a["z_mm"], a["n_samples"]) == (b["window_s"], b["quantity"], b["z_mm"], b["n_samples"])
+        and abs(float(a["rms"]) - float(b["rms"])) < 1e-9 and abs(float(a["max"]) - float(b["max"])) < 1e-9
+        for a, b in zip(crows, base_rows))
+    check(r1.returncode == 0 and r2.returncode == 0 and r.returncode == 0 and same and
+          left == [round(0.01 * i, 2) for i in range(31, 52)] and
+          "10 samples in (0.1, 0.2]" in r1.stdout and "20 samples in (-inf, 0.3]" in r2.stdout,
+          "compactSamples.py folds the samples up to the last complete write (0.1-0.2, then the rest to 0.3) and "
+          "window.py reads them as the folders: %d rows, the same: %s, %d folders left (%s)%s"
+          % (len(crows), same, len(left), ", ".join("%g" % t for t in left[:1] + left[-1:]),
+             "" if r.returncode == 0 and same else "; " + (r1.stdout + r2.stdout + r1.stderr + r2.stderr + r.stderr).strip()))
+    r = compact_run("-until", "0.4")
+    check(r.returncode == 2 and "-until 0.4" in r.stderr and "0.3" in r.stderr,
+          "compactSamples.py refuses a time after the last complete write (0.4 written by one rank only): %r"
+          % r.stderr.strip())
 
 # summary.py: a run summarised before and given as its folder of the output directory (its run
 # directory and logs gone, as on a fresh machine) keeps its row: the errors from the folder's

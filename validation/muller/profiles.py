@@ -27,12 +27,14 @@ height), the profiles averaged over the depth are written too, as Mueller et al.
 average over the bed's depth: profile_voidfractiondepthbinned and profile_vzdepthbinned (from the
 particles binned by the cell of their centre: the same instrument whatever the method under test;
 the headline of the comparison) and profile_voidfractiondepth (the method's own alpha).
+Compacted samples: the samples compactSamples.py folded into <function dir>/compacted.csv.gz (the
+columns read here, depth-averaged for depthProfiles) are read as the sample folders they replace.
 Writes <case>/results/profile_voidfraction_z<h>mm.csv and profile_vz_z<h>mm.csv (x_m = distance
 from the left wall, value, sem), the depth-averaged ones, and results/profiles_info.txt. Samples from restarted runs (the
 same time written twice, or the stretch between a stopped run's last write and its stop sampled
 again by the continued run) are counted once (drop_superseded).
 """
-import csv, glob, math, os, re, sys
+import glob, gzip, math, os, re, sys
 
 def drop_superseded(dirs):
     """A run stopped after its last write and continued from it samples that stretch of time again,
@@ -75,13 +77,60 @@ def read_set(path):
     rows = [[float(v) for v in re.split(r"[,\s]+", l)] for l in lines[1:] if not l.startswith("#")]
     return header, rows
 
-def read_series(base, t0, t1):
-    """The samples of one sets function object in (t0, t1]: {set name: {time: {column: values}}},
-    the times used and the superseded ones dropped in the window."""
-    dirs = {float(os.path.basename(d)): d for d in glob.glob(os.path.join(base, "*"))}
-    dirs, superseded = drop_superseded(dirs)
-    times = sorted(t for t in dirs if t0 < t <= t1 + 1e-9)
+STORE = "compacted.csv.gz"   # a function's samples folded by compactSamples.py
+
+
+def sample_dirs(base):
+    """{time: folder} of the sample folders of a sets function object (the names that are times)."""
+    dirs = {}
+    for d in glob.glob(os.path.join(base, "*")):
+        try:
+            dirs[float(os.path.basename(d))] = d
+        except ValueError:
+            pass
+    return dirs
+
+
+def read_store(base):
+    """The compacted samples of a function, {set: {time: {column: values}}} ({} without a store).
+    The file: gzip text, '#' comment lines, a header line time,set,<columns> and one row per time,
+    set and point, in that order."""
+    path = os.path.join(base, STORE)
+    if not os.path.exists(path):
+        return {}
     series = {}
+    with gzip.open(path, "rt") as f:
+        rows = (l for l in f if l.strip() and not l.startswith("#"))
+        header = next(rows, "").strip().split(",")
+        if header[:2] != ["time", "set"]:
+            raise ValueError(f"{path}: not a store of compacted samples (header {','.join(header[:2])!r})")
+        cols = header[2:]
+        for line in rows:
+            v = line.strip().split(",")
+            if len(v) != len(header):
+                raise ValueError(f"{path}: a row of {len(v)} values, the header has {len(header)}: {line.strip()}")
+            rec = series.setdefault(v[1], {}).setdefault(float(v[0]), {c: [] for c in cols})
+            for c, x in zip(cols, v[2:]):
+                rec[c].append(float(x))
+    return series
+
+
+def read_series(base, t0, t1):
+    """The samples of one sets function object in (t0, t1], from its sample folders and its store
+    of compacted samples: {set name: {time: {column: values}}}, the times used and the superseded
+    ones dropped in the window."""
+    dirs, superseded = drop_superseded(sample_dirs(base))
+    series = {name: {t: rec for t, rec in byt.items() if t0 < t <= t1 + 1e-9}
+              for name, byt in read_store(base).items()}
+    stored = set(t for byt in series.values() for t in byt)
+    both = sorted(stored.intersection(dirs))
+    if both:
+        print(f"profiles.py: warning: {base}: {len(both)} sample time(s) both compacted and in folders "
+              f"(first {both[0]:g}): the folders are read")
+        for byt in series.values():
+            for t in both:
+                byt.pop(t, None)
+    times = sorted(t for t in dirs if t0 < t <= t1 + 1e-9)
     for t in times:
         for path in glob.glob(os.path.join(dirs[t], "z*.csv")):
             setname = os.path.basename(path).split("_")[0]
@@ -89,15 +138,21 @@ def read_series(base, t0, t1):
             rec = series.setdefault(setname, {}).setdefault(t, {})
             for j, col in enumerate(header):
                 rec[col] = [r[j] for r in rows]
+    times = sorted(stored.union(times))
+    series = {name: byt for name, byt in series.items() if byt}
     return series, times, [t for t in superseded if t0 < t <= t1 + 1e-9]
 
 
 def depth_average(series):
     """Sets z<h>d<i> (one per cell column across the thickness, the same y points) -> one set z<h>
     per height whose columns are the means over the columns i at each y and time: what a
-    measurement through the bed's depth sees (Mueller et al.'s MR profiles are depth averages)."""
-    out = {}
+    measurement through the bed's depth sees (Mueller et al.'s MR profiles are depth averages).
+    Sets z<h> (compacted samples, averaged when they were folded) are taken as they are."""
+    out, averaged = {}, {}
     for name, byt in series.items():
+        if re.match(r"z[0-9.]+$", name):
+            averaged[name] = byt
+            continue
         m = re.match(r"(z[0-9.]+)d(\d+)$", name)
         if not m:
             continue
@@ -116,6 +171,8 @@ def depth_average(series):
             for col in rec:
                 if col not in ("y", "distance"):
                     rec[col] = [v / n for v in rec[col]]
+    for name, byt in averaged.items():
+        out.setdefault(name, {}).update(byt)
     return out
 
 

@@ -23,10 +23,11 @@ directory's name) with the RMS averaged over the heights that have data, and a t
 where there are several. Default out dir: ./window. -add: keep the rows of <out>/window.csv of the
 runs not given (runs measured before, whose run directories may be gone) and draw them too.
 
-Assumptions: samples in <run>/postProcessing/depthProfiles/<time>/ (and profiles/<time>/), as
-profiles.py reads them. A window is taken while its end is at most half a sample spacing after the
-last sample (sample times are shifted by up to a CFD step). A run still being written: a last
-sample directory with fewer files than the one before it is being written and is left out. The
+Assumptions: samples in <run>/postProcessing/depthProfiles/<time>/ (and profiles/<time>/), or
+compacted (compactSamples.py), as profiles.py reads them. A window is taken while its end is at
+most half a sample spacing after the last sample (sample times are shifted by up to a CFD step). A
+run still being written: a last sample directory with fewer files than the one before it is being
+written and is left out. The
 batch-means SEMs and their corrections (compare.py's symmetrised and noise-removed RMS) are not
 in this table: compare.py on a chosen window gives them.
 Errors (exit status 2, one line): a run without samples, a tstart at or beyond a run's last sample
@@ -62,14 +63,10 @@ def mr_heights(data_dir, U):
 
 
 def sample_times(base):
-    """The sample times under a function object's directory, without a last one still being
-    written (fewer files than the one before it)."""
+    """The sample times under a function object's directory (its folders and its compacted
+    samples), without a last folder still being written (fewer files than the one before it)."""
     counts = {}
-    for d in glob.glob(os.path.join(base, "*")):
-        try:
-            t = float(os.path.basename(d))
-        except ValueError:
-            continue
+    for t, d in profiles.sample_dirs(base).items():
         n = len(glob.glob(os.path.join(d, "z*.csv")))
         if n:
             counts[t] = n
@@ -77,7 +74,7 @@ def sample_times(base):
     if len(ts) > 1 and counts[ts[-1]] < counts[ts[-2]]:
         print(f"window.py: {base}: the sample at {ts[-1]:g} s is still being written, left out")
         ts.pop()
-    return ts
+    return sorted(set(ts).union(t for byt in profiles.read_store(base).values() for t in byt))
 
 
 def windows(name, times, tstart, step):
