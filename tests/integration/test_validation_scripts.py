@@ -352,6 +352,7 @@ with tempfile.TemporaryDirectory() as tmp:
     touch("postProcessing/profiles/2/z15_alpha.csv", "2")
     touch("postProcessing/profiles/1.99/z15_alpha.csv", "1.99")
     touch("postProcessing/readme.txt")
+    touch("postProcessing/profiles/compacted.csv.gz")   # samples folded by compactSamples.py: kept
     # series (surfaceFieldValue): a folder per start, its samples running on past T
     touch("postProcessing/pInlet/0/surfaceFieldValue.dat")        # superseded by the start at 1.5
     touch("postProcessing/pInlet/1.5/surfaceFieldValue.dat")      # runs on past 2: kept
@@ -369,10 +370,11 @@ with tempfile.TemporaryDirectory() as tmp:
     dumps = sorted(n.split("/")[2] for n in names2 if n.startswith("m_dx1_U0.9_medium/post/") and n.split("/")[2])
     series = sorted(set("/".join(n.split("/")[2:4]) for n in names2 if re.match(r"m_dx1_U0.9_medium/postProcessing/p(In|Out)let/[^/]+/", n)))
     check(r2.returncode == 0 and samples == ["2", "2.01"] and "m_dx1_U0.9_medium/postProcessing/readme.txt" in names2 and
+          "m_dx1_U0.9_medium/postProcessing/profiles/compacted.csv.gz" in names2 and
           "m_dx1_U0.9_medium/2.5/dem.restart" in names2 and series == ["pInlet/1.5", "pOutlet/0"] and
           dumps == ["dump0000200000.liggghts", "dump0000210000.liggghts", "notes.txt"],
           "runArchive pack -samplesFrom 2: the samples and DEM dumps at 2 s and later only, a series from its "
-          "last start at or before 2 s, the rest as without it: samples %s, series %s, dumps %s %s"
+          "last start at or before 2 s, the folded samples' store, the rest as without it: samples %s, series %s, dumps %s %s"
           % (samples, series, dumps, r2.stderr.strip()[-200:]))
     # dumps whose times cannot be known (no timestep line in the DEM input) stop the packing, named
     touch("DEM/in.liggghts", "units si\n")
