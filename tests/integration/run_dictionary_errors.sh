@@ -240,12 +240,25 @@ check_warns drag_misses_dense_cells "$centre_diffusion" \
 check_quiet drag_smoothed_alike "$centre_diffusion; s/^diffusionProps .*/diffusionProps { bandwidth 3e-3; smoothExchangeFields true; }/" \
     "dense cells" "$half_mesh"
 check_quiet drag_covers_dense_cells "$centre_diffusion" "get no drag at time"
+# the same on the half-size mesh with the drag through the background fields' expanded kernels
+# (reactionKernel background): every dense cell gets drag, no warning
+check_quiet drag_in_background_kernels "$centre_diffusion; s/^backgroundFields .*/backgroundFields on; backgroundFieldsProps { expansionFactor 5; wallMirror true; reactionKernel background; }/" \
+    "get no drag at time" "$half_mesh"
 # below the warning's share the count is reported at write times; with the drag smoothed alike, not
 if grep -q "dense cells without drag [0-9]* of [1-9][0-9]* at t = " "$work/drag_covers_dense_cells/log"; then
     echo "PASS: centre + diffusion reports its dense cells without drag: $(grep -o "dense cells without drag [0-9]* of [0-9]* at t = [0-9.e-]*" "$work/drag_covers_dense_cells/log" | tail -1)"
     pass=$((pass+1))
 else
     echo "FAIL: centre + diffusion did not report its dense cells without drag"; fail=$((fail+1))
+fi
+# with the drag through the expanded kernels on the half-size mesh: counted, and none without drag
+if grep -q "dense cells without drag 0 of [1-9][0-9]* at t = " "$work/drag_in_background_kernels/log"; then
+    echo "PASS: centre + diffusion with reactionKernel background on the half-size mesh: $(grep -o "dense cells without drag [0-9]* of [0-9]* at t = [0-9.e-]*" "$work/drag_in_background_kernels/log" | tail -1)"
+    pass=$((pass+1))
+else
+    echo "FAIL: centre + diffusion with reactionKernel background did not report 0 dense cells without drag:" \
+         "$(grep -o "dense cells without drag [0-9]* of [0-9]*" "$work/drag_in_background_kernels/log" | tail -1)"
+    fail=$((fail+1))
 fi
 check_warns deltaT_replaced_said 's/^couplingInterval .*/couplingInterval 125;/' \
     "it replaces deltaT 0.001 of"

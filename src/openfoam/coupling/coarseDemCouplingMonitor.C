@@ -16,8 +16,9 @@ namespace Foam
 //  diffusion (35bc19c): the Mueller bed bubbling at dx/d = 1 16 % (it runs, and its profiles are
 //  among the best, but the gas crosses those cells at twice the speed of the other dense cells at the
 //  same gas fraction: validation/muller/gasBypass.py), settled at dx/d = 1 6 %; settled at dx/d = 0.67
-//  64 % (diverges); the packed bed of tutorials/packedBedCylinder 56 % (pressure drop about 90 % below
-//  Ergun's). The count is reported at write times at any share.
+//  64 % (diverges; with reactionKernel background 0 %, and it runs); the packed bed of
+//  tutorials/packedBedCylinder 56 % (pressure drop about 90 % below Ergun's). The count is reported at
+//  write times at any share.
 static const scalar maxDragFreeDenseFraction = 0.25;
 
 //- Largest step x rate over all ranks and how many exceed 1 (the explicit update's range)
@@ -224,10 +225,12 @@ void coarseDemCoupling::checkDragCoverage()
         << " through the others (on particles as large as the cells: a packed bed's drag far below Ergun's,"
         << " or a run that diverges)" << nl << "    "
         << (voidFraction_.smoothingName() == "diffusion"
-            ? "set smoothExchangeFields true in diffusionProps (the drag smoothed alike), or use a method"
+            ? "set smoothExchangeFields true in diffusionProps (the drag smoothed alike), or"
             : "use smoothingModel diffusion with smoothExchangeFields true in diffusionProps (the drag"
-              " smoothed alike), or a method")
-        << " that spreads a particle over several cells (bigParticle, twoGrid, gaussian)" << endl;
+              " smoothed alike), or")
+        << " backgroundFields on with backgroundFieldsProps { reactionKernel background; } (the drag in the"
+        << " expanded kernels' cells), or a method that spreads a particle over several cells (bigParticle,"
+        << " twoGrid, gaussian)" << endl;
     warnedDragCoverage_ = true;
 }
 
