@@ -256,6 +256,7 @@ with tempfile.TemporaryDirectory() as tmp:
     # of the folders (to 1e-9), only the folders after 0.3 are left, and a time after 0.3 is refused
     comp = os.path.join(tmp, "compacted", os.path.basename(run))
     shutil.copytree(run, comp)
+    os.makedirs(os.path.join(comp, "system"))
     for rank, ts in (("processor0", ("0", "0.2", "0.3", "0.4")), ("processor1", ("0", "0.2", "0.3"))):
         for t in ts:
             os.makedirs(os.path.join(comp, rank, t, "uniform"))
@@ -390,6 +391,48 @@ with tempfile.TemporaryDirectory() as tmp:
     r = subprocess.run([tool, "unpack", archive, dest], capture_output=True, text=True)
     check(r.returncode != 0 and "exists" in r.stderr and restored in r.stderr,
           "runArchive refuses to unpack over an existing run: %r" % r.stderr.strip())
+
+# etc/lastCompleteWrite on a 2-rank run that writes dem.restart.step last: 1 and 2 complete, 3 stopped
+# after the fields of both ranks and its dem.restart but before dem.restart.step (complete by the
+# older rule, not this one), 4 on one rank only; -setAside moves 3 and 4 of the case and of each rank
+# into incomplete/ and leaves 2 as the latest time; a run stopped before its first complete write
+# has none (exit 1) and -setAside takes it back to 0
+with tempfile.TemporaryDirectory() as tmp:
+    run = os.path.join(tmp, "r")
+    def touch(rel):
+        os.makedirs(os.path.dirname(os.path.join(run, rel)), exist_ok=True)
+        open(os.path.join(run, rel), "w").close()
+    touch("system/controlDict")
+    for t in ("0", "1", "2", "3"):
+        for rank in (0, 1):
+            touch("processor%d/%s/U" % (rank, t))
+            if t != "0":
+                touch("processor%d/%s/uniform/time" % (rank, t))
+        if t != "0":
+            touch("%s/dem.restart" % t)
+            if t != "3":
+                touch("%s/dem.restart.step" % t)
+    touch("processor0/4/uniform/time")
+    tool = os.path.join(top, "etc", "lastCompleteWrite")
+    r = subprocess.run([tool, run], capture_output=True, text=True)
+    r2 = subprocess.run([tool, "-setAside", run], capture_output=True, text=True)
+    moved = sorted(os.path.relpath(os.path.join(d, n), run) for d, ds, fs in os.walk(os.path.join(run, "incomplete"))
+                   for n in ds if n[0].isdigit())
+    left = sorted(n for n in os.listdir(os.path.join(run, "processor0")) if n[0].isdigit())
+    check(r.returncode == 0 and r.stdout.strip() == "2" and r2.returncode == 0 and
+          moved == ["incomplete/3", "incomplete/processor0/3", "incomplete/processor0/4", "incomplete/processor1/3"]
+          and left == ["0", "1", "2"] and r2.stdout.count("cut short by a stop") == 4,
+          "lastCompleteWrite: the last time with dem.restart.step (2, not 3 without it nor 4 on one rank), "
+          "-setAside moves the later ones: %r, moved %s, processor0 keeps %s" % (r.stdout.strip(), moved, left))
+    for t in ("1", "2"):
+        os.remove(os.path.join(run, t, "dem.restart.step"))
+    touch("9/dem.restart.step")   # a marker in a time the ranks do not have: the rule stays the marker's
+    r = subprocess.run([tool, run], capture_output=True, text=True)
+    r2 = subprocess.run([tool, "-setAside", run], capture_output=True, text=True)
+    left = sorted(n for n in os.listdir(os.path.join(run, "processor1")) if n[0].isdigit())
+    check(r.returncode == 1 and r.stdout == "" and r2.returncode == 0 and left == ["0"],
+          "lastCompleteWrite: no complete write after 0 (exit %d, %r); -setAside leaves 0 only (%s)"
+          % (r.returncode, r.stdout, left))
 
 # the binary bed's scripts (tutorials/binaryBedKhan/postprocess.py, validation/khan/compare.py and
 # references.py): pressure samples of every start, runs of one case only, the wall-corrected line

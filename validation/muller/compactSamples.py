@@ -14,8 +14,8 @@ read the store as the folders it replaces: their profiles and errors are those o
 the 10th digit of the depth averages). About 1/40 of the size (the medium run of
 the recommended set-up: 301 MB of samples into 7.2 MB).
 
-T must be at most the run's last complete write time (the time a continued run starts from, as
-etc/runArchive finds it): a continued run samples the times after it again, and those must stay
+T must be at most the run's last complete write time (the time a continued run starts from:
+etc/lastCompleteWrite): a continued run samples the times after it again, and those must stay
 folders for profiles.py to tell the continued run's samples from the stopped one's. The samples of
 a stopped segment superseded by a continued run (profiles.drop_superseded) in (T0, T] are removed
 and not stored. Folding again later adds to the store. Default T0: the first sample.
@@ -26,7 +26,7 @@ Carrying a full-mode run stopped at its write time W:
 Errors (exit status 2, one line naming the file or entry): no samples, T after the last complete
 write time, a sample without a column the store holds, an unreadable store.
 """
-import gzip, os, shutil, sys
+import gzip, os, shutil, subprocess, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import profiles
@@ -44,13 +44,10 @@ def fail(msg):
 
 
 def last_complete_write(run):
-    """The last write time after 0 complete on every rank (its uniform/ folder is written last),
-    or None."""
-    ranks = sorted(os.path.join(run, d) for d in os.listdir(run) if d.startswith("processor")) or [run]
-    written = [set(t for t, d in profiles.sample_dirs(r).items() if os.path.isdir(os.path.join(d, "uniform")))
-               for r in ranks]
-    done = set.intersection(*written) - {0.0}
-    return max(done) if done else None
+    """The last write time after 0 complete on every rank (etc/lastCompleteWrite), or None."""
+    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "etc", "lastCompleteWrite")
+    r = subprocess.run([tool, run], capture_output=True, text=True)
+    return float(r.stdout) if r.returncode == 0 and r.stdout.strip() else None
 
 
 def fold(base, fn, t0, t1):
