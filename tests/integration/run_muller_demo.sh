@@ -132,7 +132,8 @@ last_t=$(cd "$fields" && ls -d [0-9]* | sort -g | tail -1)
 mkdir -p "$fields/9.99" "$run_dir/9.99" && cp "$fields/$last_t/U" "$fields/9.99/" && : > "$run_dir/9.99/dem.restart"
 if "$case_dir/Allrun" -mode demo -model "$model" -mesh "$mesh" -U "$U" -continue > "$log.continue" 2>&1 &&
    grep -q "continuing runs/$name" "$log.continue" && grep -q "write time 9.99 .*cut short by a stop" "$log.continue" &&
-   [ ! -e "$fields/9.99" ] && [ -f "$run_dir/incomplete/${fields#"$run_dir"}/9.99/U" ]; then
+   [ ! -e "$fields/9.99" ] && [ -f "$run_dir/incomplete/${fields#"$run_dir"}/9.99/U" ] && [ -d "$fields/$last_t" ] &&
+   [ "$(find "$run_dir/incomplete" -mindepth 1 -maxdepth 2 -name '[0-9]*' | sed 's|.*/||' | sort -u)" = 9.99 ]; then
     echo "PASS: $tag: -continue with the same case files continues from the last complete write ($last_t), a write cut short moved aside"
 else
     echo "FAIL: $tag: -continue with the same case files did not continue from its last complete write (see $log.continue)"; py=1

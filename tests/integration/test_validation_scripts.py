@@ -257,6 +257,12 @@ with tempfile.TemporaryDirectory() as tmp:
     comp = os.path.join(tmp, "compacted", os.path.basename(run))
     shutil.copytree(run, comp)
     os.makedirs(os.path.join(comp, "system"))
+    # a stopped segment's sample at 0.15 re-sampled by its continuation at 0.15005 (same values): the
+    # older folder is superseded, moved aside by the fold, not stored
+    for fn in ("profiles", "depthProfiles"):
+        src = os.path.join(comp, "postProcessing", fn, "0.15")
+        shutil.copytree(src, src + "005")
+        os.utime(src, (time.time() - 100, time.time() - 100))
     for rank, ts in (("processor0", ("0", "0.2", "0.3", "0.4")), ("processor1", ("0", "0.2", "0.3"))):
         for t in ts:
             os.makedirs(os.path.join(comp, rank, t, "uniform"))
@@ -273,11 +279,15 @@ with tempfile.TemporaryDirectory() as tmp:
         (a["window_s"], a["quantity"], a["z_mm"], a["n_samples"]) == (b["window_s"], b["quantity"], b["z_mm"], b["n_samples"])
         and abs(float(a["rms"]) - float(b["rms"])) < 1e-9 and abs(float(a["max"]) - float(b["max"])) < 1e-9
         for a, b in zip(crows, base_rows))
+    aside = [sorted(os.listdir(os.path.join(comp, "postProcessing", fn, "superseded")))
+             if os.path.isdir(os.path.join(comp, "postProcessing", fn, "superseded")) else []
+             for fn in ("profiles", "depthProfiles")]
     check(r1.returncode == 0 and r2.returncode == 0 and r.returncode == 0 and same and
-          left == [round(0.01 * i, 2) for i in range(31, 52)] and
-          "10 samples in (0.1, 0.2]" in r1.stdout and "20 samples in (-inf, 0.3]" in r2.stdout,
-          "compactSamples.py folds the samples up to the last complete write (0.1-0.2, then the rest to 0.3) and "
-          "window.py reads them as the folders: %d rows, the same: %s, %d folders left (%s)%s"
+          left == [round(0.01 * i, 2) for i in range(31, 52)] and aside == [["0.15"], ["0.15"]] and
+          "10 samples in (0.1, 0.2]" in r1.stdout and "1 superseded sample(s) moved" in r1.stdout and
+          "20 samples in (-inf, 0.3]" in r2.stdout,
+          "compactSamples.py folds the samples up to the last complete write (0.1-0.2, then the rest to 0.3; "
+          "a superseded one moved aside) and window.py reads them as the folders: %d rows, the same: %s, %d folders left (%s)%s"
           % (len(crows), same, len(left), ", ".join("%g" % t for t in left[:1] + left[-1:]),
              "" if r.returncode == 0 and same else "; " + (r1.stdout + r2.stdout + r1.stderr + r2.stderr + r.stderr).strip()))
     r = compact_run("-until", "0.4")
@@ -335,6 +345,7 @@ with tempfile.TemporaryDirectory() as tmp:
     touch("2.75/dem.restart")
     touch("processor0/3/uniform/time")      # 3 was written completely, but before the DEM restart (no file yet):
     os.remove(os.path.join(run, "3", "dem.restart"))   # not complete either
+    touch("incomplete/processor0/3.25/U")   # a write cut short, set aside by -continue: not packed
     archive = os.path.join(tmp, "m.tar.xz")
     tool = os.path.join(top, "etc", "runArchive")
     r = subprocess.run([tool, "pack", run, archive], capture_output=True, text=True)
@@ -345,9 +356,9 @@ with tempfile.TemporaryDirectory() as tmp:
           all("m_dx1_U0.9_medium/" + rel in names for rel in ("system/controlDict", "DEM/in.liggghts",
               "postProcessing/profiles/0.01/z15_alpha.csv", "wall_seconds.txt", "commit.txt", "2.5/dem.restart",
               "processor1/2.5/U", "processor0/constant/polyMesh/points")) and
-          not any(n.startswith("m_dx1_U0.9_medium/" + t + "/") for n in names for t in ("2.25", "2.75", "3")),
+          not any(n.startswith("m_dx1_U0.9_medium/" + t + "/") for n in names for t in ("2.25", "2.75", "3", "incomplete")),
           "runArchive pack: case, samples and the last time complete (2.5: not 3 without its DEM restart, "
-          "2.75 on one rank only, nor the older 2.25): %r, times %s" % (r.stdout.strip() or r.stderr.strip(), times))
+          "2.75 on one rank only, nor the older 2.25, nor the writes set aside in incomplete/): %r, times %s" % (r.stdout.strip() or r.stderr.strip(), times))
     # -samplesFrom: the samples before the averaging window left out, the rest as before
     touch("postProcessing/profiles/2.01/z15_alpha.csv", "2.01")
     touch("postProcessing/profiles/2/z15_alpha.csv", "2")
@@ -433,6 +444,37 @@ with tempfile.TemporaryDirectory() as tmp:
     check(r.returncode == 1 and r.stdout == "" and r2.returncode == 0 and left == ["0"],
           "lastCompleteWrite: no complete write after 0 (exit %d, %r); -setAside leaves 0 only (%s)"
           % (r.returncode, r.stdout, left))
+    # a 2-rank run started from a state and unpacked by runArchive (which keeps 0 and the last write:
+    # the ranks have no 0) has its last complete write as its first time: that one, never 0
+    run = os.path.join(tmp, "s")
+    touch("system/controlDict")
+    for rank in (0, 1):
+        touch("processor%d/2.8/uniform/time" % rank)
+    touch("2.8/dem.restart.step")
+    r = subprocess.run([tool, run], capture_output=True, text=True)
+    run = os.path.join(tmp, "z")
+    touch("system/controlDict")
+    touch("processor0/0/uniform/time")
+    touch("0/dem.restart.step")
+    r0 = subprocess.run([tool, run], capture_output=True, text=True)
+    check(r.returncode == 0 and r.stdout.strip() == "2.8" and r0.returncode == 1,
+          "lastCompleteWrite: a run whose first time is a complete write continues from it (%r); 0 is never "
+          "a write (exit %d)" % (r.stdout.strip(), r0.returncode))
+
+# profiles.drop_superseded after a fold: two folders left (0.3 of a stopped segment, 0.30005 of its
+# continuation, written later) are told apart by the spacing of the store's times too
+with tempfile.TemporaryDirectory() as tmp:
+    dirs = {}
+    for t, age in ((0.3, 200), (0.30005, 100)):
+        d = os.path.join(tmp, "%g" % t)
+        os.makedirs(d)
+        os.utime(d, (time.time() - age, time.time() - age))
+        dirs[t] = d
+    kept, dropped = profiles.drop_superseded(dirs, [round(0.01 * k, 2) for k in range(1, 30)])
+    alone, none = profiles.drop_superseded(dirs)
+    check(sorted(kept) == [0.30005] and dropped == [0.3] and sorted(alone) == [0.3, 0.30005] and none == [],
+          "drop_superseded: the folders' spacing taken with the store's times (kept %s, dropped %s; without "
+          "them nothing is dropped: too few to know the spacing)" % (sorted(kept), dropped))
 
 # the binary bed's scripts (tutorials/binaryBedKhan/postprocess.py, validation/khan/compare.py and
 # references.py): pressure samples of every start, runs of one case only, the wall-corrected line

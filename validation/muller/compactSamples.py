@@ -17,8 +17,9 @@ the recommended set-up: 301 MB of samples into 7.2 MB).
 T must be at most the run's last complete write time (the time a continued run starts from:
 etc/lastCompleteWrite): a continued run samples the times after it again, and those must stay
 folders for profiles.py to tell the continued run's samples from the stopped one's. The samples of
-a stopped segment superseded by a continued run (profiles.drop_superseded) in (T0, T] are removed
-and not stored. Folding again later adds to the store. Default T0: the first sample.
+a stopped segment superseded by a continued run (profiles.drop_superseded) in (T0, T] are not
+stored; their folders are moved into <function dir>/superseded/. Folding again later adds to the
+store. Default T0: the first sample.
 
 Carrying a full-mode run stopped at its write time W:
     compactSamples.py RUN -until W -from 10
@@ -52,7 +53,7 @@ def last_complete_write(run):
 
 def fold(base, fn, t0, t1):
     """Fold the samples of function fn in (t0, t1] into base/compacted.csv.gz; returns (samples
-    folded, superseded folders removed, store bytes)."""
+    folded, superseded folders moved aside, store bytes)."""
     store = os.path.join(base, profiles.STORE)
     try:
         kept = profiles.read_store(base)
@@ -61,6 +62,8 @@ def fold(base, fn, t0, t1):
     dirs = profiles.sample_dirs(base)
     series, times, superseded = profiles.read_series(base, t0, t1)
     new = sorted(t for t in times if t in dirs)
+    if not new and not superseded:
+        return 0, 0, os.path.getsize(store) if os.path.exists(store) else 0
     if fn == "depthProfiles":
         series = profiles.depth_average(series)
     # the columns of the store: those it holds already, else those of COLUMNS the samples have (a run
@@ -91,10 +94,14 @@ def fold(base, fn, t0, t1):
                 for k in range(len(rec["y"])):
                     f.write(f"{t:.10g},{name}," + ",".join(f"{rec[c][k]:.10g}" for c in cols) + "\n")
     os.replace(tmp, store)
-    # the folders only once the store holding them is in place
-    gone = [t for t in superseded] + new
-    for t in gone:
+    # the folders only once the store holding them is in place; the superseded ones (chosen by their
+    # file times) are kept aside, out of the samples, not deleted
+    for t in new:
         shutil.rmtree(dirs[t])
+    for t in superseded:
+        aside = os.path.join(base, "superseded")
+        os.makedirs(aside, exist_ok=True)
+        shutil.move(dirs[t], os.path.join(aside, os.path.basename(dirs[t])))
     return len(new), len(superseded), os.path.getsize(store)
 
 
@@ -129,7 +136,7 @@ def main():
         n, s, size = fold(base, fn, t0, t1)
         done += n
         print(f"compactSamples.py: {fn}: {n} samples in ({t0:g}, {t1:g}] s folded into {base}/{profiles.STORE} "
-              f"({size / 1e6:.2f} MB)" + (f"; {s} superseded sample(s) removed" if s else ""))
+              f"({size / 1e6:.2f} MB)" + (f"; {s} superseded sample(s) moved to {base}/superseded" if s else ""))
     if not done:
         fail(f"{run}: no sample folders in ({t0:g}, {t1:g}] s under postProcessing/profiles or depthProfiles")
 

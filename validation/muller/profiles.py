@@ -36,16 +36,18 @@ again by the continued run) are counted once (drop_superseded).
 """
 import glob, gzip, math, os, re, sys
 
-def drop_superseded(dirs):
+def drop_superseded(dirs, other_times=()):
     """A run stopped after its last write and continued from it samples that stretch of time again,
     at instants shifted by up to a CFD step (a function object counts its interval from the run's
     start). Both samples stay on disk; the stopped segment's are from an abandoned trajectory. Of two
-    samples closer than half the usual spacing the one written later is kept. Returns (the kept
-    {time: dir}, the dropped times)."""
+    samples closer than half the usual spacing the one written later is kept. The usual spacing is
+    the median gap of the folders' times and other_times (those of the compacted samples, which
+    are not in question). Returns (the kept {time: dir}, the dropped times)."""
     ts = sorted(dirs)
-    if len(ts) < 3:
+    every = sorted(set(ts).union(other_times))
+    if len(ts) < 2 or len(every) < 3:
         return dirs, []
-    gaps = sorted(b - a for a, b in zip(ts, ts[1:]))
+    gaps = sorted(b - a for a, b in zip(every, every[1:]))
     half = 0.5 * gaps[len(gaps) // 2]
     # groups of consecutive samples closer than half a spacing (several stops over one stretch)
     groups = [[ts[0]]]
@@ -119,9 +121,9 @@ def read_series(base, t0, t1):
     """The samples of one sets function object in (t0, t1], from its sample folders and its store
     of compacted samples: {set name: {time: {column: values}}}, the times used and the superseded
     ones dropped in the window."""
-    dirs, superseded = drop_superseded(sample_dirs(base))
-    series = {name: {t: rec for t, rec in byt.items() if t0 < t <= t1 + 1e-9}
-              for name, byt in read_store(base).items()}
+    store = read_store(base)
+    dirs, superseded = drop_superseded(sample_dirs(base), [t for byt in store.values() for t in byt])
+    series = {name: {t: rec for t, rec in byt.items() if t0 < t <= t1 + 1e-9} for name, byt in store.items()}
     stored = set(t for byt in series.values() for t in byt)
     both = sorted(stored.intersection(dirs))
     if both:
