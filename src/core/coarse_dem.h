@@ -136,6 +136,10 @@ int cdc_method_count(void);
 const char *cdc_method_name(int i);
 /* The CDC_PARAM_* bits of the parameters method `name` reads (0 for none or an unknown name). */
 unsigned cdc_method_params(const char *name);
+/* Set the members of prm that method `name` reads and that are 0 to the values it runs with when
+ * they are not given (twoGrid search_factor 3, gaussian cutoff_factor 2), so that a caller can say
+ * what a run uses, and can tell an explicit 0 (not a valid value there) from a default. */
+void cdc_method_fill_defaults(const char *name, cdc_kernel_params *prm);
 /* Comma-separated list of method names, for error messages. */
 const char *cdc_method_list(void);
 

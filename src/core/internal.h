@@ -165,6 +165,8 @@ typedef struct cdc_method {
     double (*reach)(const cdc_kernel_params *prm, double r);
     cdc_status (*build)(cdc_context *ctx, const cdc_kernel_params *prm, const cdc_particle_in *p,
                         cdc_kernel_builder *out);
+    /* optional: set the members it reads that are left 0 to the method's defaults */
+    void (*defaults)(cdc_kernel_params *prm);
 } cdc_method;
 
 const cdc_method *cdc_find_method(const char *name);

@@ -27,6 +27,12 @@ unsigned cdc_method_params(const char *name)
     return m ? m->params : 0u;
 }
 
+void cdc_method_fill_defaults(const char *name, cdc_kernel_params *prm)
+{
+    const cdc_method *m = cdc_find_method(name);
+    if (m && m->defaults && prm) m->defaults(prm);
+}
+
 /* "centre, divided, ...": made from the table, so the messages name exactly the registered methods
  * (per thread, as the core keeps no shared mutable state) */
 const char *cdc_method_list(void)

@@ -1648,6 +1648,23 @@ static void test_method_registry(void)
     CHECK(cdc_method_params("gaussian") == (CDC_PARAM_BANDWIDTH | CDC_PARAM_CUTOFF_FACTOR | CDC_PARAM_WALL_MIRROR),
           "gaussian %u", cdc_method_params("gaussian"));
     CHECK(cdc_method_params("noSuchMethod") == 0, "unknown method has parameters");
+    /* the values a method runs with when a parameter is not given (0), which the OpenFOAM layer
+     * prints and uses to refuse an explicit 0; given values and other members are left alone */
+    cdc_kernel_params tg = {0}, tg_given = {0}, ga = {0}, bp = {0}, un = {0};
+    tg_given.search_factor = 2.5;
+    ga.bandwidth = 0.004;
+    cdc_method_fill_defaults("twoGrid", &tg);
+    cdc_method_fill_defaults("twoGrid", &tg_given);
+    cdc_method_fill_defaults("gaussian", &ga);
+    cdc_method_fill_defaults("bigParticle", &bp);
+    cdc_method_fill_defaults("noSuchMethod", &un);
+    cdc_method_fill_defaults("twoGrid", NULL);
+    CHECK(tg.search_factor == 3.0 && tg.cutoff_factor == 0.0 && tg_given.search_factor == 2.5,
+          "twoGrid defaults: search_factor %g (given 2.5: %g)", tg.search_factor, tg_given.search_factor);
+    CHECK(ga.cutoff_factor == 2.0 && ga.bandwidth == 0.004 && ga.search_factor == 0.0,
+          "gaussian defaults: cutoff_factor %g, bandwidth %g", ga.cutoff_factor, ga.bandwidth);
+    CHECK(bp.expansion_factor == 0.0 && un.search_factor == 0.0 && un.cutoff_factor == 0.0,
+          "bigParticle's 0 (the original form) and an unknown method's parameters left alone");
 }
 
 /* A global sum as of two ranks holding the same values: every value doubled. A solve that sums the

@@ -113,6 +113,17 @@ for c in reaction_background reaction_background_np2; do
         echo "FAIL: reaction through the background kernels ($c): the End line's balances: ${line:-none}"; fail=$((fail+1))
     fi
 done
+# 0 where the method's default is not 0 (twoGrid searchFactor 3, gaussian cutoffFactor 2, the background
+# kernels' expansionFactor 5) stood for "not given" and silently became the default: refused, naming it
+check search_factor_zero 's/twoGridProps .*/twoGridProps { searchFactor 0; }/; s/^voidFractionModel .*/voidFractionModel twoGrid;/' \
+    "searchFactor 0 in"
+# a default is printed as the value the method runs with, marked (it was printed as 0)
+check_says two_grid_default_said "default" 's/twoGridProps .*/twoGridProps { wallMirror true; }/; s/^voidFractionModel .*/voidFractionModel twoGrid;/' \
+    "voidFractionModel twoGrid: searchFactor 3 (default)"
+check_says background_default_said "default" 's/^backgroundFields .*/backgroundFields on; backgroundFieldsProps { wallMirror true; }/' \
+    "backgroundFields bigParticle: expansionFactor 5 (default)"
+check background_expansion_zero 's/^backgroundFields .*/backgroundFields on; backgroundFieldsProps { expansionFactor 0; }/' \
+    "leave the entry out for the default, 5"
 check reaction_kernel_unknown 's/^backgroundFields .*/backgroundFields on; backgroundFieldsProps { expansionFactor 3; reactionKernel particles; }/' \
     "valid: voidFraction (default), background"
 

@@ -8,7 +8,17 @@
 
 #include <math.h>
 
-static double cutoff(const cdc_kernel_params *prm) { return prm->cutoff_factor > 0.0 ? prm->cutoff_factor : 2.0; }
+static const double default_cutoff_factor = 2.0;
+
+static double cutoff(const cdc_kernel_params *prm)
+{
+    return prm->cutoff_factor > 0.0 ? prm->cutoff_factor : default_cutoff_factor;
+}
+
+static void defaults(cdc_kernel_params *prm)
+{
+    if (prm->cutoff_factor == 0.0) prm->cutoff_factor = default_cutoff_factor;
+}
 
 static cdc_status check(cdc_context *ctx, const cdc_kernel_params *prm)
 {
@@ -42,4 +52,5 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return cdc_radial_kernel(ctx, p, radius, prm->wall_mirror, profile, &g, out);
 }
 
-const cdc_method cdc_method_gaussian = {"gaussian", CDC_PARAM_BANDWIDTH | CDC_PARAM_CUTOFF_FACTOR | CDC_PARAM_WALL_MIRROR, check, reach, build};
+const cdc_method cdc_method_gaussian = {"gaussian", CDC_PARAM_BANDWIDTH | CDC_PARAM_CUTOFF_FACTOR | CDC_PARAM_WALL_MIRROR, check,
+                                        reach, build, defaults};

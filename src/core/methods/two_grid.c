@@ -7,7 +7,17 @@
  */
 #include "radial.h"
 
-static double factor(const cdc_kernel_params *prm) { return prm->search_factor > 0.0 ? prm->search_factor : 3.0; }
+static const double default_search_factor = 3.0;
+
+static double factor(const cdc_kernel_params *prm)
+{
+    return prm->search_factor > 0.0 ? prm->search_factor : default_search_factor;
+}
+
+static void defaults(cdc_kernel_params *prm)
+{
+    if (prm->search_factor == 0.0) prm->search_factor = default_search_factor;
+}
 
 static cdc_status check(cdc_context *ctx, const cdc_kernel_params *prm)
 {
@@ -26,4 +36,5 @@ static cdc_status build(cdc_context *ctx, const cdc_kernel_params *prm, const cd
     return cdc_radial_kernel(ctx, p, radius, prm->wall_mirror, cdc_uniform_profile, &r2, out);
 }
 
-const cdc_method cdc_method_two_grid = {"twoGrid", CDC_PARAM_SEARCH_FACTOR | CDC_PARAM_WALL_MIRROR, check, reach, build};
+const cdc_method cdc_method_two_grid = {"twoGrid", CDC_PARAM_SEARCH_FACTOR | CDC_PARAM_WALL_MIRROR, check, reach, build,
+                                        defaults};

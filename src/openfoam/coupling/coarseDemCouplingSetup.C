@@ -93,7 +93,10 @@ void coarseDemCoupling::createBackgroundKernels()
 {
     if (!dict_.lookupOrDefault<Switch>("backgroundFields", false)) return;
     {
-        cdc_kernel_params prm = readKernelParams(dict_, "backgroundFields", "bigParticle", {"reactionKernel"});
+        // n = 5 when not given (the paper's background kernel), not bigParticle's own 0
+        cdc_kernel_params n5 = {};
+        n5.expansion_factor = 5;
+        cdc_kernel_params prm = readKernelParams(dict_, "backgroundFields", "bigParticle", {"reactionKernel"}, n5);
         // Where the particles' reaction goes into the fluid. voidFraction (the paper's): the cells of
         // the alpha_p kernels, with the explicit correction K (u_bg - u_k); a cell's gas then gets a
         // drag that does not grow with its own velocity, and with the centre kernel (one cell per
@@ -109,7 +112,6 @@ void coarseDemCoupling::createBackgroundKernels()
                 << " not known" << nl << "    valid: voidFraction (default), background" << exit(FatalIOError);
         }
         reactionViaBackground_ = reaction == "background";
-        if (prm.expansion_factor == 0) prm.expansion_factor = 5;
         // bigParticle with the background's own parameters (the paper's comparison run for
         // bigParticle n = 5): its kernels are the background kernels. Building them twice doubled
         // the kernel stage, and the explicit correction between the two (K (u_f - u_f)) is zero.

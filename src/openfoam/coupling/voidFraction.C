@@ -21,7 +21,8 @@ static const struct { const char* key; double cdc_kernel_params::*member; unsign
 
 cdc_kernel_params readKernelParams
 (
-    const dictionary& dict, const word& name, const word& method, const wordList& otherKeys
+    const dictionary& dict, const word& name, const word& method, const wordList& otherKeys,
+    const cdc_kernel_params& defaults
 )
 {
     cdc_kernel_params prm = {};
@@ -34,10 +35,20 @@ cdc_kernel_params readKernelParams
     if (dict.isDict(name + "Props")) checkPropsKeys(props, valid);
     // read, and say what the method runs with, so that a user sees a default taken
     Info<< (name == method ? word("voidFractionModel") : name) << " " << method << ":";
+    cdc_kernel_params dflt = defaults;   // the caller's, then the method's own
+    cdc_method_fill_defaults(method.c_str(), &dflt);
+    for (const auto& k : kernelKeys) prm.*k.member = props.lookupOrDefault<scalar>(k.key, dflt.*k.member);
     for (const auto& k : kernelKeys)
     {
-        prm.*k.member = props.lookupOrDefault<scalar>(k.key, 0);
         if (!(reads & k.bit)) continue;
+        // 0 stands for "not given" in the core: where the default is not 0, an explicit 0 would
+        // silently become it
+        if (props.found(k.key) && prm.*k.member == 0 && dflt.*k.member != 0)
+        {
+            FatalIOErrorInFunction(props)
+                << k.key << " 0 in " << dict.name() << "/" << name << "Props is not a valid value (leave the entry"
+                << " out for the default, " << dflt.*k.member << ")" << exit(FatalIOError);
+        }
         Info<< " " << k.key << " " << prm.*k.member << (props.found(k.key) ? "" : " (default)");
     }
     prm.wall_mirror = props.lookupOrDefault<Switch>("wallMirror", false) ? 1 : 0;
