@@ -60,7 +60,7 @@ def fold(base, fn, t0, t1):
     except (OSError, ValueError, EOFError) as e:
         fail(f"{store}: cannot be read ({e})")
     dirs = profiles.sample_dirs(base)
-    series, times, superseded = profiles.read_series(base, t0, t1)
+    series, times, superseded = profiles.read_series(base, t0, t1, kept)
     new = sorted(t for t in times if t in dirs)
     if not new and not superseded:
         return 0, 0, os.path.getsize(store) if os.path.exists(store) else 0

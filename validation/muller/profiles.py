@@ -117,11 +117,11 @@ def read_store(base):
     return series
 
 
-def read_series(base, t0, t1):
+def read_series(base, t0, t1, store=None):
     """The samples of one sets function object in (t0, t1], from its sample folders and its store
     of compacted samples: {set name: {time: {column: values}}}, the times used and the superseded
-    ones dropped in the window."""
-    store = read_store(base)
+    ones dropped in the window. store: the function's read_store, when the caller has read it."""
+    store = read_store(base) if store is None else store
     dirs, superseded = drop_superseded(sample_dirs(base), [t for byt in store.values() for t in byt])
     series = {name: {t: rec for t, rec in byt.items() if t0 < t <= t1 + 1e-9} for name, byt in store.items()}
     stored = set(t for byt in series.values() for t in byt)
