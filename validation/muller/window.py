@@ -62,9 +62,10 @@ def mr_heights(data_dir, U):
     return heights, sorted(speeds)
 
 
-def sample_times(base):
+def sample_times(base, store):
     """The sample times under a function object's directory (its folders and its compacted
-    samples), without a last folder still being written (fewer files than the one before it)."""
+    samples, store: profiles.read_store of it), without a last folder still being written (fewer
+    files than the one before it)."""
     counts = {}
     for t, d in profiles.sample_dirs(base).items():
         n = len(glob.glob(os.path.join(d, "z*.csv")))
@@ -74,7 +75,7 @@ def sample_times(base):
     if len(ts) > 1 and counts[ts[-1]] < counts[ts[-2]]:
         print(f"window.py: {base}: the sample at {ts[-1]:g} s is still being written, left out")
         ts.pop()
-    return sorted(set(ts).union(t for byt in profiles.read_store(base).values() for t in byt))
+    return sorted(set(ts).union(t for byt in store.values() for t in byt))
 
 
 def windows(name, times, tstart, step):
@@ -226,7 +227,8 @@ def main():
     for run in args:
         name = os.path.basename(os.path.normpath(run))
         bases = {k: os.path.join(run, "postProcessing", k) for k in ("profiles", "depthProfiles")}
-        times = {k: sample_times(b) for k, b in bases.items()}
+        stores = {k: profiles.read_store(b) for k, b in bases.items()}   # read once, used twice
+        times = {k: sample_times(b, stores[k]) for k, b in bases.items()}
         present = [ts for ts in times.values() if ts]
         if not present:
             fail(f"{name}: no samples in {bases['profiles']} or {bases['depthProfiles']}")
@@ -238,17 +240,19 @@ def main():
             print(f"window.py: warning: {name} looks like a run at U = {m.group(1)}, compared with the data for {U:g}")
         # the windows of the series that ends first, so every window is whole for both
         ends = windows(name, min(present, key=lambda ts: ts[-1]), tstart, step)
-        plan.append((run, name, bases, times, ends))
+        plan.append((run, name, bases, stores, times, ends))
 
     table = []
-    for run, name, bases, times, ends in plan:
+    for run, name, bases, stores, times, ends in plan:
         t_read = tstart + ends[-1]
         def keep(series):   # the heights with data ("z16.4" for the file's "z16.4mm")
             return {s: byt for s, byt in series.items() if s[1:] in heights}
-        mid = keep(profiles.read_series(bases["profiles"], tstart, t_read)[0]) if times["profiles"] else {}
+        mid = keep(profiles.read_series(bases["profiles"], tstart, t_read, stores["profiles"])[0]) if times["profiles"] else {}
         depth = {}
         if times["depthProfiles"]:
-            depth = keep(profiles.depth_average(profiles.read_series(bases["depthProfiles"], tstart, t_read)[0]))
+            depth = keep(profiles.depth_average(profiles.read_series(bases["depthProfiles"], tstart, t_read,
+                                                                     stores["depthProfiles"])[0]))
+        stores.clear()   # this run's samples are in mid and depth now
         messages = []
         for w in ends:
             t1 = tstart + w
