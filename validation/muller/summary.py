@@ -107,17 +107,26 @@ def plot_profiles(out, rows, plt, instrument, data_dir=DATA_DIR):
     return len(files)
 
 
+def case_labels(names):
+    """{run directory name: legend label}: the model and the parts of the name (mesh, inlet, mode,
+    background) that differ between the cases drawn, e.g. "diffusion medium" and "diffusion full"."""
+    parts = {n: n.split("_") for n in names}
+    common = set.intersection(*(set(p[1:]) for p in parts.values())) if parts else set()
+    return {n: " ".join([p[0]] + [x for x in p[1:] if x not in common]) for n, p in parts.items()}
+
+
 def plot_all_heights(out, rows, plt, instrument, data_dir=DATA_DIR):
     """Two rows (gas fraction, particle v_z) by six heights: each case's last run, its profile with
     +-2 batch SEM, and the MR data where they exist at the runs' inlet velocity."""
     latest = {r["name"]: r for r in rows}
+    labels = case_labels(latest)
     fig, axes = plt.subplots(2, len(HEIGHTS_MM), figsize=(3.2 * len(HEIGHTS_MM), 6.5), sharey="row")
     for i, q in enumerate(("voidfraction", "vz")):
         for ax, h in zip(axes[i], HEIGHTS_MM):
             inlets = set()
             for name, r in latest.items():
                 sim = os.path.join(out, r["run"], f"profile_{INSTRUMENTS[instrument].stems[q]}_z{h}mm.csv")
-                if draw_profile(ax, sim, r["model"], lw=1):
+                if draw_profile(ax, sim, labels[name], lw=1):
                     inlets.add(inlet_of(name))
             for U in sorted(u for u in inlets if u):
                 data = os.path.join(data_dir, f"mueller_U{U}_{q}_z{h}mm_MR.csv")
@@ -377,8 +386,11 @@ def main():
                 "removed: sqrt(RMS^2 - mean SEM^2) (compare.py). Wall time and core-seconds: every start summed, "
                 "the pauses found taken off (a stopped run: summary.py names them); on a shared machine not "
                 "cost figures (see the README).\n")
-        if rows:
-            f.write(f"\nAveraging window: {rows[0]['window']}\n")
+        windows = list(dict.fromkeys(r["window"] for r in rows))   # runs of different modes differ
+        if len(windows) == 1:
+            f.write(f"\nAveraging window: {windows[0]}\n")
+        elif windows:
+            f.write("\nAveraging windows:\n" + "".join(f"- {r['run']}: {r['window']}\n" for r in rows))
     try:
         import matplotlib
         matplotlib.use("Agg")
