@@ -43,6 +43,7 @@ int yes_no(Error *error, const char *keyword, const char *value)
 FixCoupleCoarse::FixCoupleCoarse(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg),
   fcoupling_(NULL),
+  fapplied_(NULL),
   apply_(1),
   check_order_(1),
   pulled_tag_(NULL),
@@ -86,6 +87,13 @@ FixCoupleCoarse::FixCoupleCoarse(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extvector = 1;
 
+  // per-atom output: the coupling force each particle got at the last DEM step (3 columns,
+  // f_ID[1..3] in dump custom), so that a dump shows where the fluid carries the particles
+  // and where their contacts do
+  peratom_flag = 1;
+  size_peratom_cols = 3;
+  peratom_freq = 1;
+
   // per-atom state travels with atoms (exchange, sorting) and into restart files;
   // new atoms (inserted particles) get a zero force via set_arrays
   restart_peratom = 1;
@@ -111,6 +119,7 @@ FixCoupleCoarse::~FixCoupleCoarse()
   atom->delete_callback(id, 0);
   atom->delete_callback(id, 1);
   memory->destroy(fcoupling_);
+  memory->destroy(fapplied_);
   memory->destroy(pulled_tag_);
 }
 
@@ -163,23 +172,23 @@ void FixCoupleCoarse::post_force(int)
 }
 
 // adds the coupling force to every local particle of the group (nothing with apply no) and
-// returns the sum of what it added
+// returns the sum of what it added; keeps each particle's force for the per-atom output
 void FixCoupleCoarse::add_coupling_forces(double sum[3])
 {
   sum[0] = sum[1] = sum[2] = 0.0;
-  if (!apply_) return;
   double **f = atom->f;
   int *mask = atom->mask;
   const int n = atom->nlocal;
   for (int i = 0; i < n; i++) {
-    if (mask[i] & groupbit) {
-      double fi[3];
+    double fi[3] = {0.0, 0.0, 0.0};
+    if (apply_ && (mask[i] & groupbit)) {
       coupling_force(i, fi);
       for (int d = 0; d < 3; d++) {
         f[i][d] += fi[d];
         sum[d] += fi[d];
       }
     }
+    for (int d = 0; d < 3; d++) fapplied_[i][d] = fi[d];
   }
 }
 
@@ -201,7 +210,7 @@ double FixCoupleCoarse::compute_vector(int n)
 
 double FixCoupleCoarse::memory_usage()
 {
-  return double(NDATA) * atom->nmax * sizeof(double) + maxpulled_ * sizeof(int);
+  return double(NDATA + 3) * atom->nmax * sizeof(double) + maxpulled_ * sizeof(int);
 }
 
 /* ----------------------------------------------------------------------
@@ -211,16 +220,20 @@ double FixCoupleCoarse::memory_usage()
 void FixCoupleCoarse::grow_arrays(int nmax)
 {
   memory->grow(fcoupling_, nmax, NDATA, "fix_couple_coarse:fcoupling");
+  memory->grow(fapplied_, nmax, 3, "fix_couple_coarse:fapplied");
+  array_atom = fapplied_;
 }
 
 void FixCoupleCoarse::copy_arrays(int i, int j, int)
 {
   for (int d = 0; d < NDATA; d++) fcoupling_[j][d] = fcoupling_[i][d];
+  for (int d = 0; d < 3; d++) fapplied_[j][d] = fapplied_[i][d];
 }
 
 void FixCoupleCoarse::set_arrays(int i)
 {
   for (int d = 0; d < NDATA; d++) fcoupling_[i][d] = 0.0;
+  for (int d = 0; d < 3; d++) fapplied_[i][d] = 0.0;
 }
 
 // the exchange record must have the same length on both sides (NDATA values)

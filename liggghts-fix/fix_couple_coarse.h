@@ -58,6 +58,11 @@ its atoms. The fix adds it to the particle's force in post_force() of every
 DEM time step until the next push_forces() replaces it. Particles created
 after the last push (e.g. by fix insert/pack) start with a zero force.
 
+The fix computes a per-atom array of 3 columns: the coupling force each
+particle got at the last time step (zero outside the group and with apply no);
+dump custom writes it as f_ID[1], f_ID[2], f_ID[3]. A dump of it shows which
+particles the fluid carries and which rest on their contacts.
+
 The fix computes a global vector of length 3: the sum over all processors of
 the stored coupling force of the particles in the group (force units). It can
 be printed with thermo_style custom as f_ID[1], f_ID[2], f_ID[3]. It is an
@@ -163,6 +168,7 @@ class FixCoupleCoarse : public Fix {
   // per-atom coupling data, [atom->nmax][NDATA]: force (3), drag coefficient K, fluid velocity (3)
   enum { NDATA = 7 };
   double **fcoupling_;
+  double **fapplied_;    // [atom->nmax][3]: the coupling force added at the last step (output)
   int apply_;            // 1: add fcoupling_ to f in post_force
   int check_order_;      // 1: push_forces checks that atoms are those of the last pull
 
