@@ -31,12 +31,23 @@ dumps every 0.02 s, and the pressure the fluid solver samples every 0.01 s):
   consecutive samples: sem = std(batch means)/sqrt(5)).
 - Stationarity: the difference of eps_sim between the second and the first half of the window
   (drift), against eps_sem.
-- Wall support: the normal force of the distributor (z = 0) and of the side walls on the particles,
-  per tube area, from the dumped overlaps with the Hertz law of wall/gran (F = 4/3 E* sqrt(r)
-  delta^1.5, E* = E / (2 (1 - nu^2)), E = 1e6 Pa, nu = 0.23; damping left out), averaged over the
-  window. What the distributor carries is weight the fluid does not: dp_sim + bottom support
-  (+ at most friction 0.1 x the side-wall normal force) should make up dp_weight.
-- v_rms: the rms particle speed over the particles and the dumps of the window (how lively the bed is).
+- Where the weight goes (measured by LIGGGHTS, post/wallForce.txt: each wall's force on the
+  particles, wall/gran store_force, summed over the particles and averaged over every 10th DEM step):
+  support_bottom_Pa = the distributor's upward force / A; side_wall_z_Pa = the z force of the four
+  side walls (friction) / A; side_wall_normal_Pa = their normal forces / A; wall_force_share = the
+  z force of all six walls over the bed's buoyant weight (dp_weight A). What the walls carry the fluid
+  does not: dp_sim / dp_weight + wall_force_share should be 1 (dp_plus_walls_rel_err).
+- fluid_share (from the dumped coupling force f_cfd of every particle): the z force of the fluid on
+  the particles over their weight m g (the fluid force includes buoyancy: -V grad p with p's
+  hydrostatic part in Model A, Archimedes in Model B), over the window; fluid_share_bottom the same
+  for the particles whose centre is within d of the distributor; forceProfile.csv by 1 mm layers.
+- Contacts (particle pairs closer than the sum of their radii, in the dumps): coordination = contacts
+  per particle; contact_persist_0.1s = the share of the contacts at a dump still in contact (the
+  same pair) 0.1 s later: near 0 in a fluidized bed, whose contacts are brief collisions; near 1 in a
+  bed resting on its contact network (frozen).
+- v_rms: the rms particle speed over the particles and the dumps of the window (how lively the bed is);
+  v_fluct_rms: the rms of the particle velocity minus its own mean over the window (the motion that is
+  not a slow drift of the whole bed).
 - Max overlap: d - the smallest centre distance (particle pairs) and r - the smallest wall distance,
   over the dumps in the window, in % of d.
 """
@@ -118,17 +129,49 @@ def max_overlap(c):
     return max(best, float(wall.max())) / (2 * r.mean())
 
 
-E_YOUNG, NU_POISSON = 1e6, 0.23       # DEM/in.liggghts
+def read_wall_forces(run, demdt):
+    """(t, columns) of post/wallForce.txt (fix ave/time of DEM/in.liggghts): z forces of the walls
+    wz0 (distributor) wz1 wx0 wx1 wy0 wy1, then the side walls' normal forces."""
+    path = os.path.join(run, "post", "wallForce.txt")
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            v = line.split()
+            if len(v) == 11:
+                rows.append([float(x) for x in v])
+    a = np.array(rows)
+    if a.ndim != 2 or len(a) == 0:
+        raise ValueError("%s: no wall-force samples" % path)
+    return a[:, 0] * demdt, a[:, 1:]
 
 
-def wall_support(c):
-    """(distributor, side walls) normal force on the particles / A (Pa), Hertz from the overlaps."""
-    es = E_YOUNG / (2 * (1 - NU_POISSON ** 2))
-    r = c["radius"]
-    f = lambda delta: 4.0 / 3 * es * np.sqrt(r) * np.clip(delta, 0, None) ** 1.5
-    bottom = float(f(r - c["z"]).sum())
-    side = float(sum(f(r - v).sum() for v in (c["x"], W - c["x"], c["y"], W - c["y"])))
-    return bottom / A, side / A
+def contact_pairs(c):
+    """Set of particle-id pairs in contact (centre distance below the sum of the radii)."""
+    p = np.stack([c["x"], c["y"], c["z"]], axis=1)
+    r, ids = c["radius"], c["id"].astype(np.int64)
+    out = set()
+    for i in range(0, len(r), 256):
+        d2 = ((p[i:i + 256, None, :] - p[None, :, :]) ** 2).sum(-1)
+        rr = (r[i:i + 256, None] + r[None, :]) ** 2
+        a, b = np.nonzero(d2 < rr)
+        a = a + i
+        keep = a < b
+        out.update(zip(ids[a[keep]].tolist(), ids[b[keep]].tolist()))
+    return out
+
+
+def contact_stats(wd, times, lag):
+    """(coordination number, share of contacts still there after lag s) over the window's dumps."""
+    coord, persist = [], []
+    pairs = [contact_pairs(c) for c in wd]
+    for k, (c, pk) in enumerate(zip(wd, pairs)):
+        coord.append(2.0 * len(pk) / len(c["z"]))
+        later = [j for j in range(k + 1, len(wd)) if abs(times[j] - times[k] - lag) < 1e-6]
+        if later and pk:
+            persist.append(len(pk & pairs[later[0]]) / len(pk))
+    return float(np.mean(coord)), (float(np.mean(persist)) if persist else float("nan"))
 
 
 def main():
@@ -180,10 +223,41 @@ def main():
                           for i in range(len(edges) - 1)]) / (A * 0.0005)
     prof /= len(wd)
     overlap = max(max_overlap(c) for c in wd[::max(1, len(wd) // 10)])
-    sup = np.array([wall_support(c) for c in wd])
-    sup_bottom, sup_side = float(sup[:, 0].mean()), float(sup[:, 1].mean())
-    # particle velocity fluctuation: rms of |v| over the particles and the dumps of the window
+    # where the weight goes: the walls (LIGGGHTS' wall forces) and the fluid (the coupling force)
+    tw, wf = read_wall_forces(a.run, a.demdt)
+    ww = (tw >= a.tstart - 1e-9) & (tw <= a.tend + 1e-9)
+    if ww.sum() < 2 * NB:
+        print("FAIL: %s: only %d wall-force samples in the window" % (name, ww.sum()))
+        return 1
+    wmean = wf[ww].mean(axis=0)
+    weight_buoyant = (ref.RHO_P - ref.RHO_F) * ref.G * vs
+    sup_bottom, side_z = wmean[0] / A, float(wmean[2:6].sum()) / A
+    sup_side = float(np.abs(wmean[6:10]).sum()) / A
+    wall_share = float(wmean[:6].sum()) / weight_buoyant
+    wall_share_sem = batch_sem(wf[ww, :6].sum(axis=1)) / weight_buoyant
+    have_fluid_force = "f_cfd[3]" in wd[0]
+    fluid_share = fluid_bottom = float("nan")
+    zbins = np.arange(0, 0.030 + 1e-12, 0.001)
+    carried = np.zeros(len(zbins) - 1); weight_bin = np.zeros(len(zbins) - 1); count_bin = np.zeros(len(zbins) - 1)
+    if have_fluid_force:
+        fz_sum = mg_sum = fz_bot = mg_bot = 0.0
+        for c in wd:
+            mg = ref.RHO_P * math.pi / 6 * (2 * c["radius"]) ** 3 * ref.G
+            fz = c["f_cfd[3]"]
+            fz_sum += fz.sum(); mg_sum += mg.sum()
+            bot = c["z"] < 2 * c["radius"]
+            fz_bot += fz[bot].sum(); mg_bot += mg[bot].sum()
+            k = np.clip(np.digitize(c["z"], zbins) - 1, 0, len(carried) - 1)
+            np.add.at(carried, k, fz); np.add.at(weight_bin, k, mg); np.add.at(count_bin, k, 1)
+        fluid_share = fz_sum / mg_sum
+        fluid_bottom = fz_bot / mg_bot if mg_bot > 0 else float("nan")
+    # particle motion: rms of |v|, and rms of v about each particle's own mean over the window
     v_rms = math.sqrt(float(np.mean([np.mean(c["vx"] ** 2 + c["vy"] ** 2 + c["vz"] ** 2) for c in wd])))
+    vstack = np.stack([np.stack([c["vx"], c["vy"], c["vz"]], axis=1) for c in wd
+                       if len(c["z"]) == len(wd[0]["z"])])
+    v_fluct = math.sqrt(float(np.mean(((vstack - vstack.mean(axis=0)) ** 2).sum(-1))))
+    twin = [t for (t, c), w in zip(dumps, win) if w]
+    coord, persist = contact_stats(wd, twin, 0.1)
 
     # pressure
     fv = lambda n: os.path.join(a.run, "postProcessing", n, "0", "surfaceFieldValue.dat")
@@ -210,10 +284,21 @@ def main():
             a.method, a.modelType, a.U, eps_sim, eps_sem, e_eq, e_rz, dp_sim, dp_weight, dp_rel, a.wall))
     with open(os.path.join(res, "details.csv"), "w") as f:
         f.write("method,modelType,U,eps_plateau,eps_plateau_sem,H_c_mm,H_c_sem_mm,eps_drift,dp_sem,max_overlap_pct_d,"
-                "support_bottom_Pa,side_wall_normal_Pa,v_rms_mm_s,n_particles_start,n_particles_end,n_dumps_window,n_dp_samples_window,tstart,tend\n")
-        f.write("%s,%s,%.3f,%.4f,%.4f,%.3f,%.3f,%.4f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,%g,%g\n" % (
+                "support_bottom_Pa,side_wall_normal_Pa,v_rms_mm_s,n_particles_start,n_particles_end,n_dumps_window,n_dp_samples_window,tstart,tend,"
+                "side_wall_z_Pa,wall_force_share,wall_force_share_sem,dp_plus_walls_rel_err,fluid_share,fluid_share_bottom,"
+                "v_fluct_rms_mm_s,coordination,contact_persist_0.1s\n")
+        f.write("%s,%s,%.3f,%.4f,%.4f,%.3f,%.3f,%.4f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,%g,%g,"
+                "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f\n" % (
             a.method, a.modelType, a.U, eps_pl, eps_pl_sem, 1e3 * hc_mean, 1e3 * hc_sem, drift, dp_sem, 100 * overlap,
-            sup_bottom, sup_side, 1e3 * v_rms, n0, n_last, int(win.sum()), int(pw.sum()), a.tstart, a.tend))
+            sup_bottom, sup_side, 1e3 * v_rms, n0, n_last, int(win.sum()), int(pw.sum()), a.tstart, a.tend,
+            side_z, wall_share, wall_share_sem, dp_rel + wall_share, fluid_share, fluid_bottom,
+            1e3 * v_fluct, coord, persist))
+    with open(os.path.join(res, "forceProfile.csv"), "w") as f:
+        f.write("z_mm,particles,fluid_share\n")
+        for i in range(len(carried)):
+            if count_bin[i] > 0:
+                f.write("%.1f,%.2f,%.4f\n" % (1e3 * 0.5 * (zbins[i] + zbins[i + 1]), count_bin[i] / len(wd),
+                                              carried[i] / weight_bin[i]))
     with open(os.path.join(res, "bedHeight.csv"), "w") as f:
         f.write("t,H_c_mm,eps_H,eps_plateau,z_top_mm,dp_Pa\n")
         for t, hc, eh, ep, zt in series:
@@ -227,9 +312,12 @@ def main():
 
     print("%s: eps_sim %.4f +- %.4f (%s drag equilibrium %.4f: %+.4f; Richardson-Zaki %.4f), eps_plateau %.4f, "
           "H_c %.2f mm, drift in window %+.4f; dp %.2f +- %.2f Pa vs weight %.2f Pa (%+.2f %%); "
-          "distributor carries %.2f Pa, side-wall normal %.2f Pa; max overlap %.2f %% d; wall %.0f s"
+          "walls carry %.2f %% of the weight (distributor %.2f Pa, side walls %.2f Pa), dp + walls %+.2f %%; "
+          "fluid carries %.3f of the weight (bottom layer %.3f); v_rms %.2f mm/s (fluctuation %.2f), "
+          "coordination %.2f, contacts kept over 0.1 s %.2f; max overlap %.2f %% d; wall %.0f s"
           % (name, eps_sim, eps_sem, a.drag, e_eq, eps_sim - e_eq, e_rz, eps_pl, 1e3 * hc_mean, drift, dp_sim, dp_sem,
-             dp_weight, 100 * dp_rel, sup_bottom, sup_side, 100 * overlap, a.wall))
+             dp_weight, 100 * dp_rel, 100 * wall_share, sup_bottom, side_z, 100 * (dp_rel + wall_share),
+             fluid_share, fluid_bottom, 1e3 * v_rms, 1e3 * v_fluct, coord, persist, 100 * overlap, a.wall))
     if a.mode == "short":
         ok = True
         def check(cond, what):
