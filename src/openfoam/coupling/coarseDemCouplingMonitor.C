@@ -79,13 +79,23 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
     vector fParticles(Zero);
     forceScale_ = 0;
     nonReacting_ = Zero;
+    // the particles' buoyant weight and the part of it the fluid's force carries (p holds the
+    // hydrostatic part: Model A's -V grad p and Model B's Archimedes both carry rho_f V g)
+    const scalar gMag = mag(fluid_.g);
+    const vector up = gMag > 0 ? -fluid_.g/gMag : vector::zero;
+    scalar weight = 0, carried = 0;
     forAll(K_, i)
     {
         const vector f = particleForce(i);
         fParticles += K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i];
         nonReacting_ += fOther_[i] - fReact_[i];
         forceScale_ += mag(f);
+        weight += (particles_.density[i] - fluid_.rho)*volume_[i]*gMag;
+        carried += (f & up) - fluid_.rho*volume_[i]*gMag;
     }
+    weightBuoyant_ += returnReduce(weight, sumOp<scalar>());
+    weightCarried_ += returnReduce(carried, sumOp<scalar>());
+    ++nWeightSamples_;
     scalar vp = 0;
     for (const double v : volume_) vp += v;
     solidVolumeParticles_ = returnReduce(vp, sumOp<scalar>());
@@ -270,6 +280,23 @@ void coarseDemCoupling::report(Ostream& os) const
             << denseCountTime_;
     }
     os  << endl;
+    if (weightBuoyant_ > 0)
+    {
+        // averaged over the couplings since the last report; in a fluidized bed the fluid carries
+        // the whole buoyant weight (the pressure drop equals it), and what it does not carry rests
+        // on the walls through the contacts (or accelerates the particles)
+        const scalar share = weightCarried_/weightBuoyant_;
+        os  << "Weight: the fluid carries " << 100*share << " % of the particles' buoyant weight (mean of "
+            << nWeightSamples_ << " couplings since the last report)";
+        if (share < 0.97)
+        {
+            os  << "; " << 100*(1 - share) << " % rests on walls through the contacts (a packed or"
+                << " jammed bed, particles on a distributor) or accelerates the particles";
+        }
+        os  << endl;
+        weightBuoyant_ = weightCarried_ = 0;
+        nWeightSamples_ = 0;
+    }
     if (inventory_.open() || inventory_.nChanged() > 0) inventory_.report(os);
     os  << "Exchange in time: " << nExchangesCompared_ << " couplings compared";
     if (nExchangesSkipped_ > 0) os << " (" << nExchangesSkipped_ << " with particles entering or leaving not)";
