@@ -5,6 +5,8 @@ liquidFluidizedBed from the runs of Allrun -all.
     summary.py TUTORIAL_DIR MODE [MODE ...]   several modes: each row from the first mode whose run
                                              exists (Allrun -summary: long, then full), written without
                                              a mode suffix; its window in the column window_s
+    summary.py TUTORIAL_DIR -ingredients RUN...  results/ingredients.csv and .md: one row per named run
+                                             (runs/RUN: the ingredient study, one input changed at a time)
     summary.py TUTORIAL_DIR MODE -dragLaws   results/dragLaws.csv and dragLaws.md: bigParticle with
                                              each drag law (Allrun -dragLaws, and the matrix's Di Felice
                                              runs) against that law's own equilibrium voidage
@@ -103,8 +105,51 @@ SUMMARY_EXTRA = ("wall_force_share", "dp_plus_walls_rel_err", "eps_plateau", "v_
                  "contact_persist_0.1s")
 
 
+def ingredients(here, names):
+    """One row per run of the ingredient study: what differs from the baseline is in the run's name."""
+    res = os.path.join(here, "results")
+    cols = ("run", "commit", "method", "modelType", "U", "window_s", "eps_sim", "eps_minus_equilibrium",
+            "eps_plateau_minus_eps_sim", "wall_force_share", "dp_rel_err", "dp_plus_walls_rel_err",
+            "fluid_share_bottom", "v_fluct_rms_mm_s", "coordination", "contact_persist_0.1s", "wall_s")
+    out = []
+    for name in names:
+        run = os.path.join(here, "runs", name)
+        if not os.path.isfile(os.path.join(run, "results", "details.csv")):
+            print("summary.py: run %s missing" % name)
+            continue
+        r, _ = read_row(os.path.join(run, "results", "result.csv"))
+        d, _ = read_row(os.path.join(run, "results", "details.csv"))
+        with open(os.path.join(run, "commit.txt")) as f:
+            commit = f.read().split()[0]
+        out.append({"run": name, "commit": commit, "method": r["method"], "modelType": r["modelType"], "U": r["U"],
+                    "window_s": "%g" % (float(d["tend"]) - float(d["tstart"])), "eps_sim": r["eps_sim"],
+                    "eps_minus_equilibrium": "%+.4f" % eps_error(r),
+                    "eps_plateau_minus_eps_sim": "%+.4f" % (float(d["eps_plateau"]) - float(r["eps_sim"])),
+                    "wall_force_share": d["wall_force_share"], "dp_rel_err": r["dp_rel_err"],
+                    "dp_plus_walls_rel_err": d["dp_plus_walls_rel_err"], "fluid_share_bottom": d["fluid_share_bottom"],
+                    "v_fluct_rms_mm_s": d["v_fluct_rms_mm_s"], "coordination": d["coordination"],
+                    "contact_persist_0.1s": d["contact_persist_0.1s"], "wall_s": r["wall_s"]})
+    if not out:
+        return 1
+    with open(os.path.join(res, "ingredients.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=cols, lineterminator="\n")
+        w.writeheader()
+        w.writerows(out)
+    with open(os.path.join(res, "ingredients.md"), "w") as f:
+        f.write("| run | eps - eq. | plateau - eps | walls carry | dp + walls | fluid, bottom layer | v_fluct (mm/s) "
+                "| coordination | contacts kept 0.1 s |\n|" + "---|" * 9 + "\n")
+        for o in out:
+            f.write("| %s | %s | %s | %.2f %% | %+.2f %% | %s | %s | %s | %s |\n" % (
+                o["run"], o["eps_minus_equilibrium"], o["eps_plateau_minus_eps_sim"], 100 * float(o["wall_force_share"]),
+                100 * float(o["dp_plus_walls_rel_err"]), o["fluid_share_bottom"], o["v_fluct_rms_mm_s"],
+                o["coordination"], o["contact_persist_0.1s"]))
+    return 0
+
+
 def main():
     here = sys.argv[1]
+    if sys.argv[2:3] == ["-ingredients"]:
+        return ingredients(here, sys.argv[3:])
     if sys.argv[3:] == ["-dragLaws"]:
         return drag_laws(here, sys.argv[2])
     modes = sys.argv[2:]
