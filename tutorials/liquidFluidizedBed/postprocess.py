@@ -23,9 +23,15 @@ dumps every 0.02 s, and the pressure the fluid solver samples every 0.01 s):
   (alpha_p ~ 0.6) with water gaps between them (profile.csv): there is no plateau, and the
   central-window average depends on where the gaps fall (it drifts by ~0.02 in 0.4 s where eps_H
   stays within 0.002). The README shows the profiles.
-- dp_sim = rho_f (p_inlet - p_above) - rho_f g z_above: the area average of p over the inlet face
-  (z = 0, below the bed) minus that over the cross-section z_above = 30.5 mm (above the bed),
-  less the hydrostatic head of the water between them (p is kinematic and includes it).
+- dp_sim: the bed's frictional pressure drop, the inlet-to-outlet pressure difference less the water's
+  hydrostatic head and less the water's own friction on the tube's side walls (the empty-tube loss
+  a fluidization experiment subtracts): rho_f p_inlet - rho_f g H_tube - F_wall / A, p_inlet the area
+  average of p over the inlet face (z = 0, below the bed), p = 0 at the outlet (z = 120 mm, p is
+  kinematic and includes the hydrostatic part), F_wall the z force of the water's viscous stress on the
+  side walls (the forces function object wallFriction: nu dev2(grad U) at the walls; in Model A the
+  water's stress in the bed is alpha times that, so there it is an upper bound by a factor 1/alpha).
+  details.csv: dp_plane, the earlier measure (the inlet face against the cross-section at 30.5 mm above
+  the bed, less the head between them, the wall friction not taken off), and wall_friction_Pa.
 - dp_weight = (rho_p - rho_f) g V_s / A, V_s from the dumped radii.
 - Time averages over the window tstart..tend; the standard error by batch means (5 batches of
   consecutive samples: sem = std(batch means)/sqrt(5)).
@@ -60,6 +66,7 @@ import references as ref
 
 A, W, HT = ref.A, 0.010, 0.120
 Z_ABOVE = 0.0305
+H_TUBE = 0.120
 HEADER = "method,modelType,U,eps_sim,eps_sem,eps_drag_equilibrium,eps_richardson_zaki,dp_sim,dp_weight,dp_rel_err,wall_s"
 NB = 5
 PERSIST_FROZEN = 0.5   # share of contacts lasting 0.1 s from which a bed counts as frozen (short mode)
@@ -105,6 +112,23 @@ def read_fv(path):
             raise ValueError("%s: unreadable sample line %r" % (path, line.rstrip("\n")))
         t.append(ti)
         v.append(vi)
+    return np.array(t), np.array(v)
+
+
+def read_wall_friction(path):
+    """(times, z force) of the viscous part of the forces function object's force.dat (v1912: columns
+    in parentheses, total, pressure, viscous[, porous]). A last line cut short is left out."""
+    t, v = [], []
+    with open(path) as f:
+        lines = [l for l in f if l.strip() and not l.startswith("#")]
+    for i, line in enumerate(lines):
+        nums = line.replace("(", " ").replace(")", " ").split()
+        try:
+            t.append(float(nums[0])); v.append(float(nums[9]))
+        except (IndexError, ValueError):
+            if i == len(lines) - 1:
+                break
+            raise ValueError("%s: unreadable line %r" % (path, line.rstrip("\n")))
     return np.array(t), np.array(v)
 
 
@@ -269,9 +293,18 @@ def main():
         print("FAIL: %s: pressure samples missing or not at the same times" % name)
         return 1
     rho_f, g = ref.RHO_F, ref.G
-    dp = rho_f * (pi_[:m] - pa[:m]) - rho_f * g * Z_ABOVE
+    dp_pl = rho_f * (pi_[:m] - pa[:m]) - rho_f * g * Z_ABOVE
+    tf, fv = read_wall_friction(os.path.join(a.run, "postProcessing", "wallFriction", "0", "force.dat"))
+    k = min(m, len(tf))
+    if k == 0 or np.max(np.abs(ti[:k] - tf[:k])) > 1e-9:
+        print("FAIL: %s: wall-friction samples missing or not at the pressure's times" % name)
+        return 1
+    m = k
+    dp_pl = dp_pl[:m]
+    dp = rho_f * pi_[:m] - rho_f * g * H_TUBE - fv[:m] / A
     pw = (ti[:m] >= a.tstart - 1e-9) & (ti[:m] <= a.tend + 1e-9)
     dp_sim, dp_sem = float(dp[pw].mean()), batch_sem(dp[pw])
+    dp_plane, wall_friction = float(dp_pl[pw].mean()), float(fv[:m][pw].mean() / A)
     dp_weight = (ref.RHO_P - rho_f) * g * vs / A
     dp_rel = (dp_sim - dp_weight) / dp_weight
     e_eq, e_rz = ref.eps_drag_equilibrium(a.U, a.drag), ref.eps_richardson_zaki(a.U)
@@ -287,13 +320,13 @@ def main():
         f.write("method,modelType,U,eps_plateau,eps_plateau_sem,H_c_mm,H_c_sem_mm,eps_drift,dp_sem,max_overlap_pct_d,"
                 "support_bottom_Pa,side_wall_normal_Pa,v_rms_mm_s,n_particles_start,n_particles_end,n_dumps_window,n_dp_samples_window,tstart,tend,"
                 "side_wall_z_Pa,wall_force_share,wall_force_share_sem,dp_plus_walls_rel_err,fluid_share,fluid_share_bottom,"
-                "v_fluct_rms_mm_s,coordination,contact_persist_0.1s\n")
+                "v_fluct_rms_mm_s,coordination,contact_persist_0.1s,dp_plane,wall_friction_Pa\n")
         f.write("%s,%s,%.3f,%.4f,%.4f,%.3f,%.3f,%.4f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,%g,%g,"
-                "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f\n" % (
+                "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%.3f,%.4f\n" % (
             a.method, a.modelType, a.U, eps_pl, eps_pl_sem, 1e3 * hc_mean, 1e3 * hc_sem, drift, dp_sem, 100 * overlap,
             sup_bottom, sup_side, 1e3 * v_rms, n0, n_last, int(win.sum()), int(pw.sum()), a.tstart, a.tend,
             side_z, wall_share, wall_share_sem, dp_rel + wall_share, fluid_share, fluid_bottom,
-            1e3 * v_fluct, coord, persist))
+            1e3 * v_fluct, coord, persist, dp_plane, wall_friction))
     with open(os.path.join(res, "forceProfile.csv"), "w") as f:
         f.write("z_mm,particles,fluid_share\n")
         for i in range(len(carried)):
@@ -326,10 +359,14 @@ def main():
             ok &= cond
             print("%s %s: %s" % ("PASS" if cond else "FAIL", name, what))
         check(n_last == n0, "particles kept (%d at the start, %d at the end)" % (n0, n_last))
-        check(abs(dp_rel + wall_share) <= 0.02,
-              "momentum balance: the frictional pressure drop %.2f Pa and the walls' share %.2f %% make up the "
-              "bed's buoyant weight %.2f Pa within 2 %% (%+.2f %%)" % (dp_sim, 100 * wall_share, dp_weight,
-                                                                     100 * (dp_rel + wall_share)))
+        # within 2 % and two standard errors of the window's mean pressure drop: a method whose
+        # alpha_p jumps as centres cross faces (centre, divided at dx = d) swings the pressure by
+        # several Pa over the 0.3 s window
+        tol = 0.02 + 2 * dp_sem / dp_weight
+        check(abs(dp_rel + wall_share) <= tol,
+              "momentum balance: the frictional pressure drop %.2f +- %.2f Pa and the walls' share %.2f %% make up "
+              "the bed's buoyant weight %.2f Pa within 2 %% + 2 SEM = %.1f %% (%+.2f %%)" % (
+                  dp_sim, dp_sem, 100 * wall_share, dp_weight, 100 * tol, 100 * (dp_rel + wall_share)))
         check(wall_share < 0.02, "the walls carry under 2 %% of the bed's weight (%.2f %%: distributor %.2f Pa, "
               "side walls %.2f Pa)" % (100 * wall_share, sup_bottom, side_z))
         check(abs(fluid_bottom - 1) <= 0.05, "the fluid carries the weight of the layer on the distributor "
