@@ -177,6 +177,9 @@ def main():
                 details.append(d)
                 shutil.copy(os.path.join(run, "bedHeight.csv"), os.path.join(res, "runs", name + "_bedHeight.csv"))
                 shutil.copy(os.path.join(run, "profile.csv"), os.path.join(res, "runs", name + "_profile.csv"))
+                if os.path.isfile(os.path.join(run, "forceProfile.csv")):
+                    shutil.copy(os.path.join(run, "forceProfile.csv"),
+                                os.path.join(res, "runs", name + "_forceProfile.csv"))
     if not rows:
         print("summary.py: no runs of mode %s" % " or ".join(modes))
         return 1
