@@ -66,7 +66,6 @@ import references as ref
 
 A, W, HT = ref.A, 0.010, 0.120
 Z_ABOVE = 0.0305
-H_TUBE = 0.120
 HEADER = "method,modelType,U,eps_sim,eps_sem,eps_drag_equilibrium,eps_richardson_zaki,dp_sim,dp_weight,dp_rel_err,wall_s"
 NB = 5
 PERSIST_FROZEN = 0.5   # share of contacts lasting 0.1 s from which a bed counts as frozen (short mode)
@@ -96,39 +95,24 @@ def read_dumps(run, demdt):
     return out
 
 
-def read_fv(path):
-    """(times, values) of a surfaceFieldValue file. Its last line may be cut short (the run was
-    killed while writing it): left out; a bad line anywhere else is an error naming the file."""
+def read_fv(path, column=1):
+    """(times, values of the given column) of a function object's file: a surfaceFieldValue file, or
+    forces' force.dat, whose vectors are in parentheses (v1912: total, pressure, viscous, so the viscous
+    z force is column 9). Its last line may be cut short (the run was killed while writing it): left
+    out; a bad line anywhere else is an error naming the file."""
     t, v = [], []
     with open(path) as f:
         lines = [l for l in f if l.strip() and not l.startswith("#")]
     for i, line in enumerate(lines):
-        s = line.split()
+        s = line.replace("(", " ").replace(")", " ").split()
         try:
-            ti, vi = float(s[0]), float(s[1])
+            ti, vi = float(s[0]), float(s[column])
         except (IndexError, ValueError):
             if i == len(lines) - 1:
                 break
             raise ValueError("%s: unreadable sample line %r" % (path, line.rstrip("\n")))
         t.append(ti)
         v.append(vi)
-    return np.array(t), np.array(v)
-
-
-def read_wall_friction(path):
-    """(times, z force) of the viscous part of the forces function object's force.dat (v1912: columns
-    in parentheses, total, pressure, viscous[, porous]). A last line cut short is left out."""
-    t, v = [], []
-    with open(path) as f:
-        lines = [l for l in f if l.strip() and not l.startswith("#")]
-    for i, line in enumerate(lines):
-        nums = line.replace("(", " ").replace(")", " ").split()
-        try:
-            t.append(float(nums[0])); v.append(float(nums[9]))
-        except (IndexError, ValueError):
-            if i == len(lines) - 1:
-                break
-            raise ValueError("%s: unreadable line %r" % (path, line.rstrip("\n")))
     return np.array(t), np.array(v)
 
 
@@ -140,16 +124,21 @@ def batch_sem(x):
     return float(np.std(means, ddof=1) / math.sqrt(NB))
 
 
+def pair_blocks(c):
+    """The centre distances of all particle pairs of a dump in blocks of 256 rows, so memory stays
+    small: (first row, distances, sums of the radii), a particle's distance to itself infinite."""
+    p = np.stack([c["x"], c["y"], c["z"]], axis=1)
+    r = c["radius"]
+    for i in range(0, len(r), 256):
+        d = np.sqrt(((p[i:i + 256, None, :] - p[None, :, :]) ** 2).sum(-1))
+        rows = np.arange(len(d))
+        d[rows, rows + i] = np.inf
+        yield i, d, r[i:i + 256, None] + r[None, :]
+
+
 def max_overlap(c):
     x, y, z, r = c["x"], c["y"], c["z"], c["radius"]
-    p = np.stack([x, y, z], axis=1)
-    best = 0.0
-    for i in range(0, len(x), 256):          # blocks of rows, so memory stays small
-        d = np.sqrt(((p[i:i + 256, None, :] - p[None, :, :]) ** 2).sum(-1))
-        rr = r[i:i + 256, None] + r[None, :]
-        idx = np.arange(i, min(i + 256, len(x)))
-        d[np.arange(len(idx)), idx] = np.inf
-        best = max(best, float((rr - d).max()))
+    best = max(float((rr - d).max()) for _, d, rr in pair_blocks(c))
     wall = np.concatenate([r - x, r - (W - x), r - y, r - (W - y), r - z, r - (HT - z)])
     return max(best, float(wall.max())) / (2 * r.mean())
 
@@ -174,13 +163,10 @@ def read_wall_forces(run, demdt):
 
 def contact_pairs(c):
     """Set of particle-id pairs in contact (centre distance below the sum of the radii)."""
-    p = np.stack([c["x"], c["y"], c["z"]], axis=1)
-    r, ids = c["radius"], c["id"].astype(np.int64)
+    ids = c["id"].astype(np.int64)
     out = set()
-    for i in range(0, len(r), 256):
-        d2 = ((p[i:i + 256, None, :] - p[None, :, :]) ** 2).sum(-1)
-        rr = (r[i:i + 256, None] + r[None, :]) ** 2
-        a, b = np.nonzero(d2 < rr)
+    for i, d, rr in pair_blocks(c):
+        a, b = np.nonzero(d < rr)
         a = a + i
         keep = a < b
         out.update(zip(ids[a[keep]].tolist(), ids[b[keep]].tolist()))
@@ -260,22 +246,19 @@ def main():
     sup_side = float(np.abs(wmean[6:10]).sum()) / A
     wall_share = float(wmean[:6].sum()) / weight_buoyant
     wall_share_sem = batch_sem(wf[ww, :6].sum(axis=1)) / weight_buoyant
-    have_fluid_force = "f_cfd[3]" in wd[0]
-    fluid_share = fluid_bottom = float("nan")
     zbins = np.arange(0, 0.030 + 1e-12, 0.001)
     carried = np.zeros(len(zbins) - 1); weight_bin = np.zeros(len(zbins) - 1); count_bin = np.zeros(len(zbins) - 1)
-    if have_fluid_force:
-        fz_sum = mg_sum = fz_bot = mg_bot = 0.0
-        for c in wd:
-            mg = ref.RHO_P * math.pi / 6 * (2 * c["radius"]) ** 3 * ref.G
-            fz = c["f_cfd[3]"]
-            fz_sum += fz.sum(); mg_sum += mg.sum()
-            bot = c["z"] < 2 * c["radius"]
-            fz_bot += fz[bot].sum(); mg_bot += mg[bot].sum()
-            k = np.clip(np.digitize(c["z"], zbins) - 1, 0, len(carried) - 1)
-            np.add.at(carried, k, fz); np.add.at(weight_bin, k, mg); np.add.at(count_bin, k, 1)
-        fluid_share = fz_sum / mg_sum
-        fluid_bottom = fz_bot / mg_bot if mg_bot > 0 else float("nan")
+    fz_sum = mg_sum = fz_bot = mg_bot = 0.0
+    for c in wd:
+        mg = ref.RHO_P * math.pi / 6 * (2 * c["radius"]) ** 3 * ref.G
+        fz = c["f_cfd[3]"]
+        fz_sum += fz.sum(); mg_sum += mg.sum()
+        bot = c["z"] < 2 * c["radius"]
+        fz_bot += fz[bot].sum(); mg_bot += mg[bot].sum()
+        k = np.clip(np.digitize(c["z"], zbins) - 1, 0, len(carried) - 1)
+        np.add.at(carried, k, fz); np.add.at(weight_bin, k, mg); np.add.at(count_bin, k, 1)
+    fluid_share = fz_sum / mg_sum
+    fluid_bottom = fz_bot / mg_bot if mg_bot > 0 else float("nan")
     # particle motion: rms of |v|, and rms of v about each particle's own mean over the window
     v_rms = math.sqrt(float(np.mean([np.mean(c["vx"] ** 2 + c["vy"] ** 2 + c["vz"] ** 2) for c in wd])))
     vstack = np.stack([np.stack([c["vx"], c["vy"], c["vz"]], axis=1) for c in wd
@@ -294,14 +277,14 @@ def main():
         return 1
     rho_f, g = ref.RHO_F, ref.G
     dp_pl = rho_f * (pi_[:m] - pa[:m]) - rho_f * g * Z_ABOVE
-    tf, fv = read_wall_friction(os.path.join(a.run, "postProcessing", "wallFriction", "0", "force.dat"))
+    tf, fv = read_fv(os.path.join(a.run, "postProcessing", "wallFriction", "0", "force.dat"), column=9)
     k = min(m, len(tf))
     if k == 0 or np.max(np.abs(ti[:k] - tf[:k])) > 1e-9:
         print("FAIL: %s: wall-friction samples missing or not at the pressure's times" % name)
         return 1
     m = k
     dp_pl = dp_pl[:m]
-    dp = rho_f * pi_[:m] - rho_f * g * H_TUBE - fv[:m] / A
+    dp = rho_f * pi_[:m] - rho_f * g * HT - fv[:m] / A
     pw = (ti[:m] >= a.tstart - 1e-9) & (ti[:m] <= a.tend + 1e-9)
     dp_sim, dp_sem = float(dp[pw].mean()), batch_sem(dp[pw])
     dp_plane, wall_friction = float(dp_pl[pw].mean()), float(fv[:m][pw].mean() / A)

@@ -20,6 +20,7 @@ import csv, os, shutil, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import references as ref
+from postprocess import PERSIST_FROZEN
 
 METHODS = ("centre", "divided", "bigParticle", "diffusion", "diffusionSources")
 MODELS = ("A", "B")
@@ -53,9 +54,14 @@ def targets_met(r):
         misses.append("walls")
     if abs(float(r["eps_plateau"]) - float(r["eps_sim"])) > 0.01:
         misses.append("plateau")
-    if not float(r["contact_persist_0.1s"]) < 0.5:
+    if not float(r["contact_persist_0.1s"]) < PERSIST_FROZEN:
         misses.append("frozen")
     return "MET" if not misses else "MISSED (%s)" % ", ".join(misses)
+
+
+def window_s(d):
+    """The averaging window of a run, from its details.csv row."""
+    return "%g" % (float(d["tend"]) - float(d["tstart"]))
 
 
 def mode_suffix(mode):
@@ -122,7 +128,7 @@ def ingredients(here, names):
         with open(os.path.join(run, "commit.txt")) as f:
             commit = f.read().split()[0]
         out.append({"run": name, "commit": commit, "method": r["method"], "modelType": r["modelType"], "U": r["U"],
-                    "window_s": "%g" % (float(d["tend"]) - float(d["tstart"])), "eps_sim": r["eps_sim"],
+                    "window_s": window_s(d), "eps_sim": r["eps_sim"],
                     "eps_minus_equilibrium": "%+.4f" % eps_error(r),
                     "eps_plateau_minus_eps_sim": "%+.4f" % (float(d["eps_plateau"]) - float(r["eps_sim"])),
                     "wall_force_share": d["wall_force_share"], "dp_rel_err": r["dp_rel_err"],
@@ -172,7 +178,7 @@ def main():
                 d, dheader = read_row(os.path.join(run, "details.csv"))
                 for k in SUMMARY_EXTRA:
                     r[k] = d.get(k, "")
-                r["window_s"] = "%g" % (float(d["tend"]) - float(d["tstart"]))
+                r["window_s"] = window_s(d)
                 rows.append(r)
                 details.append(d)
                 shutil.copy(os.path.join(run, "bedHeight.csv"), os.path.join(res, "runs", name + "_bedHeight.csv"))

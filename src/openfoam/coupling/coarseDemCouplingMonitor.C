@@ -93,8 +93,9 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
         weight += (particles_.density[i] - fluid_.rho)*volume_[i]*gMag;
         carried += (f & up) - fluid_.rho*volume_[i]*gMag;
     }
-    weightBuoyant_ += returnReduce(weight, sumOp<scalar>());
-    weightCarried_ += returnReduce(carried, sumOp<scalar>());
+    // this rank's sums; report() reduces them over the ranks once
+    weightBuoyant_ += weight;
+    weightCarried_ += carried;
     ++nWeightSamples_;
     scalar vp = 0;
     for (const double v : volume_) vp += v;
@@ -280,12 +281,13 @@ void coarseDemCoupling::report(Ostream& os) const
             << denseCountTime_;
     }
     os  << endl;
-    if (weightBuoyant_ > 0)
+    const scalar weightBuoyant = returnReduce(weightBuoyant_, sumOp<scalar>());
+    if (weightBuoyant > 0)
     {
         // averaged over the couplings since the last report; in a fluidized bed the fluid carries
         // the whole buoyant weight (the pressure drop equals it), and what it does not carry rests
         // on the walls through the contacts (or accelerates the particles)
-        const scalar share = weightCarried_/weightBuoyant_;
+        const scalar share = returnReduce(weightCarried_, sumOp<scalar>())/weightBuoyant;
         os  << "Weight: the fluid carries " << 100*share << " % of the particles' buoyant weight (mean of "
             << nWeightSamples_ << " couplings since the last report)";
         if (share < 0.97)
@@ -294,9 +296,9 @@ void coarseDemCoupling::report(Ostream& os) const
                 << " jammed bed, particles on a distributor) or accelerates the particles";
         }
         os  << endl;
-        weightBuoyant_ = weightCarried_ = 0;
-        nWeightSamples_ = 0;
     }
+    weightBuoyant_ = weightCarried_ = 0;
+    nWeightSamples_ = 0;
     if (inventory_.open() || inventory_.nChanged() > 0) inventory_.report(os);
     os  << "Exchange in time: " << nExchangesCompared_ << " couplings compared";
     if (nExchangesSkipped_ > 0) os << " (" << nExchangesSkipped_ << " with particles entering or leaving not)";
