@@ -9,13 +9,16 @@
 # samples of the same bed. A tolerance is harmless when its profiles differ from the reference's no
 # more than those of a tighter tolerance do.
 #
-#   bench/tolerance_study.sh -setting diffusion|pressure [-values "REF T2 T3 ..."]
+#   bench/tolerance_study.sh -setting diffusion|pressure|demStep [-values "REF T2 T3 ..."]
 #
 # Settings:
 #   diffusion  diffusionProps tolerance (the smoothing's CG), model diffusion (b = 6 d); stage alphaP.
 #              Default values "1e-10 1e-12 1e-6"
 #   pressure   the tolerance of p and pFinal in system/fvSolution (GAMG; relTol 0.01 and 0 as the
 #              tutorial's), model bigParticle; stage fluid. Default values "1e-8 1e-10 1e-6"
+#   demStep    the DEM step in s (DEM/materials.liggghts timestep), with couplingInterval set so that
+#              the CFD step stays 1.8e-4 s; model bigParticle; stage DEM. Default values
+#              "3e-6 1.5e-6 6e-6" (9.1, 4.5 and 18.2 % of the Rayleigh time 3.3e-5 s)
 # Written: bench/results/tolerance_<setting>.csv (per tolerance, quantity and height: the RMS over the
 # profile of its difference from the reference), tolerance_<setting>_timers.csv (the setting's stage
 # timer and its share of each run) and tolerance_<setting>_info.txt (command, commit).
@@ -26,13 +29,14 @@ while [ $# -gt 0 ]; do
     case "$1" in
         -setting) setting="$2"; shift 2 ;;
         -values) values="$2"; shift 2 ;;
-        *) echo "usage: $0 -setting diffusion|pressure [-values \"REF T2 T3 ...\"]" >&2; exit 2 ;;
+        *) echo "usage: $0 -setting diffusion|pressure|demStep [-values \"REF T2 T3 ...\"]" >&2; exit 2 ;;
     esac
 done
 case "$setting" in
     diffusion) model=diffusion stage=alphaP; values=${values:-"1e-10 1e-12 1e-6"} ;;
     pressure) model=bigParticle stage=fluid; values=${values:-"1e-8 1e-10 1e-6"} ;;
-    *) echo "bench/tolerance_study: -setting must be diffusion or pressure (got '$setting')" >&2; exit 2 ;;
+    demStep) model=bigParticle stage=DEM; values=${values:-"3e-6 1.5e-6 6e-6"} ;;
+    *) echo "bench/tolerance_study: -setting must be diffusion, pressure or demStep (got '$setting')" >&2; exit 2 ;;
 esac
 for t in $values; do
     /usr/bin/python3 -c "import sys; t = float(sys.argv[1]); sys.exit(0 if 0 < t < 1 else 1)" "$t" 2> /dev/null ||
@@ -46,6 +50,15 @@ set_tolerance() { # tutorial-copy tol
         pressure) sed -i "s|^\( *p  *{ solver GAMG; smoother GaussSeidel; tolerance \)[^;]*;|\1$2;|" "$1/system/fvSolution"
                   grep -q "tolerance $2; relTol 0.01" "$1/system/fvSolution" ||
                       { echo "bench/tolerance_study: the p entry of $1/system/fvSolution is not the one this script edits" >&2; return 1; } ;;
+        demStep)
+            # the CFD step 1.8e-4 s kept: couplingInterval = 1.8e-4 / step, a whole number
+            local n
+            n=$(/usr/bin/python3 -c "import sys; n = 1.8e-4 / float(sys.argv[1]); sys.exit(1) if abs(n - round(n)) > 1e-9 * n else print(round(n))" "$2") ||
+                { echo "bench/tolerance_study: DEM step $2 does not divide the CFD step 1.8e-4 s" >&2; return 1; }
+            sed -i "s|^timestep .*|timestep        $2|" "$1/DEM/materials.liggghts"
+            sed -i "s|^couplingInterval .*|couplingInterval    $n;|" "$1/constant/couplingProperties"
+            grep -q "^timestep        $2" "$1/DEM/materials.liggghts" ||
+                { echo "bench/tolerance_study: no timestep line in $1/DEM/materials.liggghts" >&2; return 1; } ;;
     esac
 }
 work="$here/work/tolerance_$setting"
