@@ -213,6 +213,12 @@ check_warns effective_parameters_printed 's/bigParticleProps .*/bigParticleProps
 check dem_error_in_solver_output '' "the DEM (LIGGGHTS) stopped the run" "echo 'fix bad all no_such_style' >> DEM/in.liggghts"
 check dem_error_hint_style '' "a style LIGGGHTS does not know" "echo 'fix bad all no_such_style' >> DEM/in.liggghts"
 check dem_error_hint_processors '' "as many ranks as mpirun -np" "sed -i 's/^processors .*/processors 2 1 1/' DEM/in.liggghts"
+# neighbour lists: 'multi' builds no granular contacts in LIGGGHTS 3.8.0 (stops, naming the script); a
+# skin below d_min/5 is warned with its measured cost
+check dem_neighbour_multi '' "sets 'neighbor ... multi': LIGGGHTS 3.8.0 builds no granular contacts" \
+    "sed -i 's/^neighbor .*/neighbor 0.0002 multi/' DEM/in.liggghts"
+check_warns dem_neighbour_small_skin '' "sets a neighbour skin of 0.0001 m, 0.1 of the smallest diameter 0.001 m" \
+    "sed -i 's/^neighbor .*/neighbor 0.0001 bin/' DEM/in.liggghts"
 # a mesh in millimetres with the DEM in metres, and the reverse, say "units"
 check mesh_in_millimetres '' "and the mesh are in different units" \
     "sed -i 's/^scale .*/scale 1;/' system/blockMeshDict && blockMesh > log.blockMesh 2>&1"

@@ -1,6 +1,7 @@
 #include "coarseDemCoupling.H"
 #include "particleCloud.H"
 #include "demTimeStepCheck.H"
+#include "demNeighbourCheck.H"
 #include "demUnitsCheck.H"
 #include "fvc.H"
 #include "noAliasFvc.H"
@@ -139,6 +140,7 @@ coarseDemCoupling::coarseDemCoupling
     checkDemUnits(dem_->lammps(), mesh, dict_);    // DEM box and particles against the mesh
     checkDemCoarseGraining(dem_->lammps(), cgFactor_, dict_);
     checkDemTimestep(dem_->lammps(), dict_);   // vs Rayleigh and Hertz times: warn / stop
+    checkDemNeighbours(dem_->lammps(), dict_); // neighbour style and skin vs the particle sizes
     keepRestartForces_ = dem_->restarted();
 
     printSummary(names);
