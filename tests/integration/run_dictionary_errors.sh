@@ -133,12 +133,20 @@ check unknown_model_file 's/^voidFractionModel .*/voidFractionModel centroid;/' 
 check missing_keyword '/^couplingInterval/d' "Entry 'couplingInterval' not found in dictionary"
 check unknown_force 's/GidaspowDrag/GidaspowDarg/' "unknown force model GidaspowDarg in entry forceModels"
 check force_list_valid 's/GidaspowDrag/GidaspowDarg/' "DiFeliceDrag"
-check misspelt_props 's/bigParticleProps /bigparticleProps /' "unknown dictionary bigparticleProps in"
+check misspelt_props 's/bigParticleProps /bigparticleProps /' "dictionary bigparticleProps: no model of that name"
 check misspelt_props_valid 's/bigParticleProps /bigparticleProps /' "bigParticleProps, centreProps"
 # the model's own reading must not come first: a misspelt dictionary of the selected model
 check misspelt_props_selected 's/^voidFractionModel .*/voidFractionModel gaussian;/; s/gaussianProps /gausianProps /' \
-    "unknown dictionary gausianProps in"
-check misspelt_props_case 's/bigParticleProps /bigParticleprops /' "unknown dictionary bigParticleprops in"
+    "dictionary gausianProps: no model of that name"
+check misspelt_props_case 's/bigParticleProps /bigParticleprops /' "dictionary bigParticleprops: no model of that name"
+# plain entries at the top level: a misspelt one, a model's entry written outside its dictionary, and
+# several at once (all named in one message, with the entries that are read)
+check misspelt_entry 's/^backgroundFields .*/backgroundfields on;/' \
+    "entry backgroundfields: not an entry of couplingProperties (misspelt?)"
+check misplaced_entry 's/^alphaMin .*/&\nsmoothExchangeFields true;/' \
+    "entry smoothExchangeFields: an entry of diffusionProps, not of the top level"
+check unknown_entries_all 's/^alphaMin .*/&\nexpansionFactor 5;\nimplicitdrag false;/' "2 unknown entries in"
+check unknown_entries_valid 's/^alphaMin .*/&\nimplicitdrag false;/' "entries read: allowParticleLoss, alphaMin, alphaRelaxationTime"
 check_warns smooth_exchange_without_diffusion 's/^diffusionProps .*/diffusionProps { bandwidth 6e-3; smoothExchangeFields true; }/' \
     "couplingProperties\"/diffusionProps acts with smoothingModel diffusion only; smoothingModel is off: ignored"
 check expansion_lt_1 's/bigParticleProps .*/bigParticleProps { expansionFactor 0.5; }/' \

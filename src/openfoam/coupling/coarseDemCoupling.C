@@ -7,6 +7,8 @@
 #include "noAliasFvc.H"
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
+#include "OStringStream.H"
+#include "HashTable.H"
 
 #include <cmath>
 
@@ -37,11 +39,13 @@ static void nameAfterFile(dictionary& dict, const fileName& name)
     }
 }
 
-// The sub-dictionaries of couplingProperties are the <model>Props of the models. One whose name
-// matches no model (a misspelt name) would be ignored and its model would run with the defaults:
-// refuse it, naming the dictionaries that are read. Returns its argument, so that the check (and the
-// naming after the file) runs before the first model reads its dictionary.
-static const dictionary& checkPropsDictionaries(IOdictionary& io)
+// Every entry of couplingProperties, checked before any model reads it: an entry nothing reads (a
+// misspelt name, or a model's entry written at the top level instead of in its <model>Props) would be
+// ignored and the run would go on with the defaults. Sub-dictionaries must be the <model>Props of a
+// model (or openSystem); plain entries the solver's own. All unknown entries are named in one message,
+// each misplaced one with the dictionary it belongs in. Returns its argument, so that the check (and
+// the naming after the file) runs before the first model reads its dictionary.
+static const dictionary& checkCouplingEntries(IOdictionary& io)
 {
     dictionary& file = io;          // as a dictionary: IOdictionary's own name() is the object's
     fileName path = file.name();    // the master's: the file it read
@@ -49,21 +53,71 @@ static const dictionary& checkPropsDictionaries(IOdictionary& io)
     nameAfterFile(file, path);
     // read through a const view: the non-const iterator would follow the link nameAfterFile avoids
     const dictionary& dict = file;
-    wordHashSet known{"backgroundFieldsProps", "diffusionProps", "sizeAwareDiffusionProps", "openSystem"};
-    for (int i = 0; i < cdc_method_count(); ++i) known.insert(word(cdc_method_name(i)) + "Props");
-    for (const word& f : forceModel::dictionaryConstructorTablePtr_->sortedToc()) known.insert(f + "Props");
+    wordHashSet dicts{"backgroundFieldsProps", "diffusionProps", "sizeAwareDiffusionProps", "openSystem"};
+    for (int i = 0; i < cdc_method_count(); ++i) dicts.insert(word(cdc_method_name(i)) + "Props");
+    for (const word& f : forceModel::dictionaryConstructorTablePtr_->sortedToc()) dicts.insert(f + "Props");
+    // the plain entries read from the top level (doc/couplingProperties.md)
+    const wordHashSet entries
+    {
+        "modelType", "couplingInterval", "demScript", "implicitDrag", "implicitParticleDrag",
+        "voidFractionModel", "mirrorPatches", "alphaMin", "alphaRelaxationTime", "smoothingModel",
+        "backgroundFields", "forceModels", "coarseGrainingFactor", "demRestart", "demFreshStart",
+        "demCouplingFix", "demTimeStepWarnFraction", "demTimeStepMaxFraction", "demTimeStepForce",
+        "demMaxImpactVelocity", "allowParticleLoss", "particleFieldsInterval", "solidVelocityField",
+        "binnedParticleFields", "binnedSpeciesFields", "writeExchangeFields", "writeParticleCloud"
+    };
+    // entries of a model's dictionary, where they belong when written at the top level
+    const HashTable<word> belongs
+    {
+        {"expansionFactor", "bigParticleProps or backgroundFieldsProps"},
+        {"wallMirror", "bigParticleProps, twoGridProps, gaussianProps or backgroundFieldsProps"},
+        {"searchFactor", "twoGridProps"},
+        {"bandwidth", "diffusionProps or gaussianProps"},
+        {"smoothExchangeFields", "diffusionProps"},
+        {"nSteps", "diffusionProps or sizeAwareDiffusionProps"},
+        {"tolerance", "diffusionProps or sizeAwareDiffusionProps"},
+        {"DRule", "diffusionProps"},
+        {"particleDiameter", "diffusionProps"},
+        {"bandwidthOverD", "sizeAwareDiffusionProps"},
+        {"classRatio", "sizeAwareDiffusionProps"},
+        {"reactionKernel", "backgroundFieldsProps"},
+        {"reynoldsNumber", "DiFeliceDragProps"},
+        {"CL", "liftForceProps"},
+        {"Cvm", "virtualMassForceProps"}
+    };
+    OStringStream unknown;
+    label nUnknown = 0;
     for (const entry& e : dict)
     {
         const word& k = e.keyword();
-        if (e.isDict() && k != "FoamFile" && !known.found(k))
+        if (k == "FoamFile") continue;
+        const bool ok = e.isDict() ? dicts.found(k) : entries.found(k);
+        if (ok) continue;
+        ++nUnknown;
+        unknown << nl << "    " << (e.isDict() ? "dictionary " : "entry ") << k;
+        if (!e.isDict() && belongs.found(k))
         {
-            string names;
-            for (const word& w : known.sortedToc()) names += (names.empty() ? "" : ", ") + w;
-            FatalIOErrorInFunction(dict)
-                << "unknown dictionary " << k << " in " << dict.name() << " (a misspelt model name?"
-                << " it would be ignored)" << nl << "    dictionaries read: " << names.c_str()
-                << exit(FatalIOError);
+            unknown << ": an entry of " << belongs[k] << ", not of the top level";
         }
+        else if (e.isDict())
+        {
+            unknown << ": no model of that name (a misspelt model name?)";
+        }
+        else
+        {
+            unknown << ": not an entry of couplingProperties (misspelt?)";
+        }
+    }
+    if (nUnknown)
+    {
+        string dNames, eNames;
+        for (const word& w : dicts.sortedToc()) dNames += (dNames.empty() ? "" : ", ") + w;
+        for (const word& w : entries.sortedToc()) eNames += (eNames.empty() ? "" : ", ") + w;
+        FatalIOErrorInFunction(dict)
+            << nUnknown << " unknown entr" << (nUnknown > 1 ? "ies" : "y") << " in " << dict.name()
+            << " (each would be ignored):" << unknown.str().c_str() << nl
+            << "    entries read: " << eNames.c_str() << nl
+            << "    dictionaries read: " << dNames.c_str() << exit(FatalIOError);
     }
     return dict;
 }
@@ -76,7 +130,7 @@ coarseDemCoupling::coarseDemCoupling
     mesh_(mesh),
     dict_(couplingDictIO(mesh)),
     modelB_(false),
-    couplingInterval_(checkPropsDictionaries(dict_).get<label>("couplingInterval")),
+    couplingInterval_(checkCouplingEntries(dict_).get<label>("couplingInterval")),
     implicitDrag_(dict_.lookupOrDefault<Switch>("implicitDrag", true)),
     implicitParticleDrag_(dict_.lookupOrDefault<Switch>("implicitParticleDrag", true)),
     demRestart_(dict_.lookupOrDefault<Switch>("demRestart", true)),
