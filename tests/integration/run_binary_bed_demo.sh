@@ -72,14 +72,17 @@ check(hb < hs, "big below small: mean heights %.2f mm (1 mm) and %.2f mm (0.3 mm
 dp, w = float(bed["dp_pa"]), float(bed["dp_weight_pa"])
 check(abs(dp - w) <= 0.05 * w, "frictional pressure drop %.2f +- %.2f Pa within 5 %% of the buoyant weight %.2f Pa "
       "(%+.2f %%)" % (dp, float(bed["dp_sem_pa"]), w, 100 * (dp - w) / w))
+ws = float(bed.get("wall_force_share", "nan"))
+check(ws < 0.03, "the walls carry under 3 %% of the bed's buoyant weight (%.2f +- %.2f %%: post/wallForce.txt)"
+      % (100 * ws, 100 * float(bed.get("wall_force_share_sem", "nan"))))
 msgs = open(os.path.join(res, "messages.txt")).read().strip()
 check(not msgs, "no WARNING (no layer leaves the tube, largest overlap %s %% d)%s"
       % (bed["max_overlap_pct_d"], "" if not msgs else ": " + msgs.splitlines()[0]))
 summ = os.path.join(res, "compare", "summary.csv")
 lines = open(summ).read().splitlines() if os.path.isfile(summ) else []
 header = ("method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,"
-          "mixing_width_mm,window_s,wall_s,coupling_share")
-check(len(lines) == 3 and lines[0] == header and all(len(l.split(",")) == 13 for l in lines[1:]),
+          "mixing_width_mm,window_s,wall_s,coupling_share,wall_force_share")
+check(len(lines) == 3 and lines[0] == header and all(len(l.split(",")) == 14 for l in lines[1:]),
       "compare.py's summary.csv: the agreed header and a row per species (%d lines)" % len(lines))
 sys.exit(status)
 PYEOF
@@ -133,6 +136,12 @@ if "$case_dir/Allrun" -mode demo -method "$method" -U "$U" -name "$name" -contin
     result ok "$tag: -continue with the same case files continues"
 else
     result fail "$tag: -continue with the same case files did not continue (see $log.continue)"
+fi
+# the first start's wall forces survive the continuation (LIGGGHTS starts its file anew)
+if [ -f "$run/post/wallForce.part0.txt" ] && [ "$(grep -vc '^#' "$run/post/wallForce.part0.txt")" -gt 0 ]; then
+    result ok "$tag: -continue keeps the first start's wall forces as post/wallForce.part0.txt ($(grep -vc '^#' "$run/post/wallForce.part0.txt") samples)"
+else
+    result fail "$tag: -continue lost the first start's wall forces (no samples in $run/post/wallForce.part0.txt)"
 fi
 cp "$run/DEM/in.liggghts" "$log.dem"
 echo "# edited" >> "$run/DEM/in.liggghts"

@@ -573,11 +573,13 @@ with tempfile.TemporaryDirectory() as tmp:
             w.writeheader()
             w.writerows(rows)
 
-    def edited_run(name, young, big_plateau_shift=0.0, dp_shift=0.0, method=None):
+    def edited_run(name, young, big_plateau_shift=0.0, dp_shift=0.0, method=None, dem_dt=None):
         d = os.path.join(tmp, "stiff", name)
         shutil.copytree(kept, d)
         bed = read_rows(os.path.join(d, "results", "bed.csv"))
         bed[0]["young_pa"] = young
+        if dem_dt:
+            bed[0]["dem_dt_s"] = dem_dt
         bed[0]["dp_pa"] = "%.6f" % (float(bed[0]["dp_pa"]) + dp_shift)
         if method:
             bed[0]["method"] = method
@@ -599,13 +601,24 @@ with tempfile.TemporaryDirectory() as tmp:
           "binary bed stiffness.py: plateau 0.015 (5 sem) and dp 3.0 Pa (3.3 sem, 2.5 %% of the weight) apart "
           "differ, the unchanged quantities agree: %s" % verdicts)
     for args, want in (((soft, edited_run("other", "1000000", method="divided")), "method (bigParticle against divided)"),
-                       ((soft, edited_run("same", "100000")), "is not softer than")):
+                       ((edited_run("stiffer", "1000000"), soft), "is not softer than"),
+                       ((edited_run("same", "100000", dem_dt="1e-05"), edited_run("same2", "100000", dem_dt="1e-05")),
+                        "have the same Young's modulus and DEM step"),
+                       ((soft, edited_run("nostep", "100000")), "DEM step of"),
+                       ((edited_run("fine", "100000", dem_dt="1e-05"), edited_run("coarse", "100000", dem_dt="2e-05")),
+                        "has not the longer step"),
+                       ((edited_run("both", "100000", dem_dt="2e-05"), edited_run("both2", "1000000", dem_dt="1e-05")),
+                        "both Young's modulus and the DEM step")):
         try:
-            khan_stiff.refuse_unless_comparable(*args)
+            khan_stiff.compared_setting(*args)
             refused = ""
         except SystemExit as e:
             refused = str(e)
         check(want in refused, "binary bed stiffness.py refuses: %r" % refused[-110:])
+
+    check(khan_stiff.compared_setting(edited_run("coarse2", "100000", dem_dt="2e-05"),
+                                      edited_run("fine2", "100000", dem_dt="1e-05")) == "step",
+          "binary bed stiffness.py compares two DEM steps of one Young's modulus (the longer first)")
 
     # references: Richardson-Zaki with the tube's wall correction of u_t, computed here independently
     u_t = khan_ref.terminal_velocity(1e-3)[0]

@@ -92,6 +92,7 @@ def _load(path, name):
 # the dump reader, the surfaceFieldValue reader and batch means of the monodisperse bed's post-processing
 _mono = _load(os.path.join(TOP, "tutorials", "liquidFluidizedBed", "postprocess.py"), "liquid_bed_postprocess")
 read_dumps, read_fv, batch_sem, NB = _mono.read_dumps, _mono.read_fv, _mono.batch_sem, _mono.NB
+read_wall_forces = _mono.read_wall_forces
 ref = _load(os.path.join(TOP, "validation", "khan", "references.py"), "khan_references")
 # the project's reader of written fields (ascii or binary)
 _fields = _load(os.path.join(TOP, "etc", "python", "foam_fields.py"), "foam_fields")
@@ -478,6 +479,20 @@ def main():
     sp0 = species_index(first["radius"])
     vol = [float(np.sum(4.0 / 3 * math.pi * first["radius"][sp0 == s] ** 3)) for s in range(len(SPECIES))]
     dp_ref = ref.dp_weight(sum(vol))
+    # where the weight goes: the walls' z forces on the particles (DEM/tubeWalls.liggghts), their
+    # window mean over the bed's buoyant weight; nan for a run made before the walls stored them
+    wall_share = wall_share_sem = float("nan")
+    if os.path.isfile(os.path.join(a.run, "post", "wallForce.txt")):
+        tw, wf = read_wall_forces(a.run, a.demdt)
+        ww = (tw >= a.tstart - 1e-9) & (tw <= a.tend + 1e-9)
+        weight = (ref.RHO_P - ref.RHO_F) * ref.G * sum(vol)
+        if ww.sum() >= 2 * NB:
+            wall_share = float(wf[ww, :6].sum(axis=1).mean()) / weight
+            wall_share_sem = batch_sem(wf[ww, :6].sum(axis=1)) / weight
+        if wall_share > 0.03:
+            warnings.append("the walls carry %.1f %% of the bed's buoyant weight in the window (distributor %.1f %%): "
+                            "a packed or jammed layer, not a fluidized one" % (100 * wall_share,
+                                                                              100 * float(wf[ww, 0].mean()) / weight))
     times = written_times(a.run)
     last_t, last_dir = times[-1] if times else (float("nan"), None)
     p_z = alpha_solver = np.full(NZ, np.nan)
@@ -552,13 +567,14 @@ def main():
               "dp_rel_err,mixing_width_mm,mixing_width_sem_mm,mixing_width_mean_profile_mm,mixing_lo_mm,mixing_hi_mm,"
               "t_end_dump,t_last_write,max_overlap_pct_d,n_pairs_overlap_over_5pct,binned_fields_moved_big,"
               "binned_fields_near_face_big,binned_fields_moved_small,binned_fields_near_face_small,wall_s,n_warnings,"
-              "background,young_pa,ranks,coupling_share,dem_per_fluid,coupling_per_fluid,commit",
+              "background,young_pa,ranks,coupling_share,dem_per_fluid,coupling_per_fluid,commit,wall_force_share,wall_force_share_sem,"
+              "dem_dt_s",
               [[a.method, a.U, a.mode, a.tstart, a.tend, window_s, len(win), int(pw.sum()), dp_sim, dp_sem,
                 dp_ref, (dp_sim - dp_ref) / dp_ref, 1e3 * widths.mean(), 1e3 * sem_of(widths),
                 1e3 * mix_mean_prof.sum() * DX, 1e3 * mix_zone[0], 1e3 * mix_zone[1], t_end, last_t,
-                100 * worst_overlap, worst_pairs] + list(fields_check[0]) + list(fields_check[1]) + [wall, len(warnings), background, young, ranks] + list(costs) + [commit_of(a.run)]],
+                100 * worst_overlap, worst_pairs] + list(fields_check[0]) + list(fields_check[1]) + [wall, len(warnings), background, young, ranks] + list(costs) + [commit_of(a.run), wall_share, wall_share_sem, a.demdt]],
               "%s,%.3f,%s,%g,%g,%g,%d,%d,%.3f,%.3f,%.3f,%.5f,%.2f,%.2f,%.1f,%.1f,%.1f,%g,%g,%.3f,%d,%d,%d,%d,%d,%.1f,%d,%s,%g,%d,"
-              "%.4f,%.3f,%.4f,%s")
+              "%.4f,%.3f,%.4f,%s,%.5f,%.5f,%g")
     write_csv(os.path.join(res, "axis_end.csv"),
               "z_mm,alphaP_method_t%g,%s" % (last_t, ",".join("alpha_%s_binned_t%g" % (s, t_end) for s in SPECIES)),
               [[1e3 * z[k], axis_solver[k]] + [axis_species[s][k] for s in range(len(SPECIES))] for k in range(NZ)],
@@ -588,6 +604,7 @@ def main():
         print("%s: %-5s plateau alpha_p %.4f +- %.4f (Richardson-Zaki %.4f, drag equilibrium %.4f, pressure slope %.4f), "
               "layer %.1f..%.1f mm, mean height %.2f +- %.2f mm (drift in the window %+.2f mm)"
               % (name, name_s, r[4], r[5], r[14], r[15], r[13], r[8], r[9], r[10], r[11], r[12]))
+    print("%s: the walls carry %.2f +- %.2f %% of the buoyant weight" % (name, 100 * wall_share, 100 * wall_share_sem))
     print("%s: frictional dp %.2f +- %.2f Pa against the buoyant weight %.2f Pa (%+.2f %%); mixing region %.2f +- %.2f mm "
           "(on the mean profiles %.1f mm, %.1f..%.1f mm); largest overlap %.2f %% d; window %g..%g s, %d dumps; wall %.0f s"
           % (name, dp_sim, dp_sem, dp_ref, 100 * (dp_sim - dp_ref) / dp_ref, 1e3 * widths.mean(), 1e3 * sem_of(widths),

@@ -2,12 +2,14 @@
 """initialParticles.py -- the start state of liquidFluidizedBed: 1146 spheres of d = 1 mm at random,
 non-overlapping positions (random sequential addition, fixed seed), as LIGGGHTS commands.
 
-    initialParticles.py [-cg F] [-width W] > DEM/particles.in
+    initialParticles.py [-cg F] [-width W] [-species small] > DEM/particles.in
 
 -cg F (coarse graining, Radl et al. 2011 as Weaver & Miskovic 2023 use it): round(1146 / F^3) grains
 of d = F mm in the same box, with the same rejection distance in grain diameters (1.02 d): the
 same solid volume within the rounding (F = 2: 143 grains, -0.17 %; F = 3: 42 grains, -1.0 %).
 -width W: a tube W mm wide (default 10) with (W/10)^2 times the particles, the same solid fraction.
+-species small: the binary bed's small species instead (Table III: 42441 spheres of 0.3 mm, the same
+solid volume 600 mm3), in the same box: the same solid fraction, 0.273.
 
 The centres are drawn uniformly in the box 0.5 < x, y < 9.5 mm, 0.5 < z < 21.5 mm (no particle
 touches a wall) and a draw closer than 1.02 d to a placed centre is rejected. The particles fill
@@ -21,7 +23,9 @@ import random, sys
 
 CG = float(sys.argv[sys.argv.index("-cg") + 1]) if "-cg" in sys.argv else 1.0
 WIDTH = float(sys.argv[sys.argv.index("-width") + 1]) * 1e-3 if "-width" in sys.argv else 10e-3
-N, D, RHO_P = round(1146 * (WIDTH / 10e-3) ** 2 / CG ** 3), CG * 1e-3, 2000.0
+SMALL = "-species" in sys.argv and sys.argv[sys.argv.index("-species") + 1] == "small"
+N0, D0 = (42441, 0.3e-3) if SMALL else (1146, 1e-3)   # Table III of Zhang et al. (2023)
+N, D, RHO_P = round(N0 * (WIDTH / 10e-3) ** 2 / CG ** 3), CG * D0, 2000.0
 LO, HI_XY, HI_Z, GAP = D / 2, WIDTH - D / 2, 22e-3 - D / 2, 1.02 * D
 rng = random.Random(20231130)
 cell = GAP                                    # cell list of edge >= the rejection distance

@@ -144,20 +144,28 @@ def max_overlap(c):
 
 
 def read_wall_forces(run, demdt):
-    """(t, columns) of post/wallForce.txt (fix ave/time of DEM/in.liggghts): z forces of the walls
-    wz0 (distributor) wz1 wx0 wx1 wy0 wy1, then the side walls' normal forces."""
-    path = os.path.join(run, "post", "wallForce.txt")
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            v = line.split()
-            if len(v) == 11:
-                rows.append([float(x) for x in v])
-    a = np.array(rows)
+    """(t, columns) of post/wallForce.txt (fix ave/time of DEM/tubeWalls.liggghts): z forces of the
+    walls wz0 (distributor) wz1 wx0 wx1 wy0 wy1, then the side walls' normal forces. A continued run
+    (binaryBedKhan -continue) keeps each earlier start's file as post/wallForce.part<N>.txt, since
+    LIGGGHTS starts the file anew: the parts in order, then wallForce.txt, each step from the last
+    file that has it (a continued start recomputes the steps after its restart)."""
+    post = os.path.join(run, "post")
+    parts = sorted(glob.glob(os.path.join(post, "wallForce.part*.txt")),
+                   key=lambda p: int(re.search(r"part(\d+)\.txt$", p).group(1)))
+    by_step = {}
+    for path in parts + [os.path.join(post, "wallForce.txt")]:
+        if not os.path.isfile(path):
+            continue
+        with open(path) as f:
+            for line in f:
+                if line.startswith("#") or not line.strip():
+                    continue
+                v = line.split()
+                if len(v) == 11:
+                    by_step[int(v[0])] = [float(x) for x in v]
+    a = np.array([by_step[k] for k in sorted(by_step)])
     if a.ndim != 2 or len(a) == 0:
-        raise ValueError("%s: no wall-force samples" % path)
+        raise ValueError("%s: no wall-force samples" % os.path.join(post, "wallForce.txt"))
     return a[:, 0] * demdt, a[:, 1:]
 
 
@@ -204,6 +212,7 @@ def main():
         print("FAIL: %s: no particle dumps in %s/post" % (name, a.run))
         return 1
     vs = float(np.sum(math.pi / 6 * (2 * dumps[0][1]["radius"]) ** 3))
+    d_p = 2 * float(np.median(dumps[0][1]["radius"]))   # the bed's diameter (1 mm; -species small 0.3 mm)
     n0 = len(dumps[0][1]["z"])
     series = []                               # t, H_c, eps_H, eps_plateau, z_top
     for t, c in dumps:
@@ -225,8 +234,9 @@ def main():
     hc_mean = float(s[win, 1].mean())
     hc_sem = batch_sem(s[win, 1])
 
-    # time-averaged solid fraction profile, 0.5 mm bins
-    edges = np.arange(0, 0.030 + 1e-12, 0.0005)
+    # time-averaged solid fraction profile, 0.5 mm bins, up to 30 mm or the highest particle's top
+    z_top = max(0.030, math.ceil(1e3 * float(s[win, 4].max())) * 1e-3)
+    edges = np.arange(0, z_top + 1e-12, 0.0005)
     prof = np.zeros(len(edges) - 1)
     wd = [c for (t, c), w in zip(dumps, win) if w]
     for c in wd:
@@ -246,7 +256,7 @@ def main():
     sup_side = float(np.abs(wmean[6:10]).sum()) / A
     wall_share = float(wmean[:6].sum()) / weight_buoyant
     wall_share_sem = batch_sem(wf[ww, :6].sum(axis=1)) / weight_buoyant
-    zbins = np.arange(0, 0.030 + 1e-12, 0.001)
+    zbins = np.arange(0, z_top + 1e-12, 0.001)
     carried = np.zeros(len(zbins) - 1); weight_bin = np.zeros(len(zbins) - 1); count_bin = np.zeros(len(zbins) - 1)
     fz_sum = mg_sum = fz_bot = mg_bot = 0.0
     for c in wd:
@@ -290,7 +300,7 @@ def main():
     dp_plane, wall_friction = float(dp_pl[pw].mean()), float(fv[:m][pw].mean() / A)
     dp_weight = (ref.RHO_P - rho_f) * g * vs / A
     dp_rel = (dp_sim - dp_weight) / dp_weight
-    e_eq, e_rz = ref.eps_drag_equilibrium(a.U, a.drag), ref.eps_richardson_zaki(a.U)
+    e_eq, e_rz = ref.eps_drag_equilibrium(a.U, a.drag, d_p), ref.eps_richardson_zaki(a.U, d_p)
     n_last = len(dumps[-1][1]["z"])
 
     res = os.path.join(a.run, "results")

@@ -60,18 +60,19 @@ def difelice_cd_chi(re):
 DRAG_LAWS = ("DiFelice", "Gidaspow", "KochHill")
 
 
-def drag_force(law, eps, U):
-    """Drag (N) on a particle at rest in a homogeneous bed of voidage eps at superficial velocity U."""
-    re, ur, mu, vol = U * D / NU, U / eps, NU * RHO_F, VP
+def drag_force(law, eps, U, d=D):
+    """Drag (N) on a particle of diameter d (default the tutorial's 1 mm) at rest in a homogeneous
+    bed of voidage eps at superficial velocity U."""
+    re, ur, mu, vol = U * d / NU, U / eps, NU * RHO_F, math.pi / 6 * d ** 3
     if law == "DiFelice":
         cd, chi = difelice_cd_chi(re)
-        return math.pi / 8 * cd * RHO_F * D ** 2 * U ** 2 * eps ** (-chi)
+        return math.pi / 8 * cd * RHO_F * d ** 2 * U ** 2 * eps ** (-chi)
     if law == "Gidaspow":
         if eps <= 0.8:
-            k = vol * (150 * (1 - eps) * mu / (eps * D ** 2) + 1.75 * RHO_F * ur / D)
+            k = vol * (150 * (1 - eps) * mu / (eps * d ** 2) + 1.75 * RHO_F * ur / d)
         else:
             cd_re = 24 * (1 + 0.15 * re ** 0.687) if re < 1000 else 0.44 * re
-            k = vol * 0.75 * cd_re * NU / (eps * D) * RHO_F * eps / D * eps ** -2.65
+            k = vol * 0.75 * cd_re * NU / (eps * d) * RHO_F * eps / d * eps ** -2.65
         return k * ur
     if law == "KochHill":
         phi = 1 - eps
@@ -81,14 +82,14 @@ def drag_force(law, eps, U):
         else:
             f0 = 10 * phi / (1 - phi) ** 3
         f3 = 0.0673 + 0.212 * phi + 0.0232 / (1 - phi) ** 5
-        return vol * 18 * mu * eps ** 2 * (f0 + 0.5 * f3 * re) / D ** 2 * ur
+        return vol * 18 * mu * eps ** 2 * (f0 + 0.5 * f3 * re) / d ** 2 * ur
     raise ValueError("unknown drag law %r (%s)" % (law, " ".join(DRAG_LAWS)))
 
 
-def eps_drag_equilibrium(U, law="DiFelice"):
-    """Voidage where the code's drag law on a particle at rest equals eps (rho_p - rho_f) V g."""
+def eps_drag_equilibrium(U, law="DiFelice", d=D):
+    """Voidage where the code's drag law on a particle (diameter d) at rest equals eps (rho_p - rho_f) V g."""
     def residual(eps):                    # drag per particle / (eps x buoyant weight) - 1
-        return drag_force(law, eps, U) / (eps * (RHO_P - RHO_F) * G * VP) - 1
+        return drag_force(law, eps, U, d) / (eps * (RHO_P - RHO_F) * G * math.pi / 6 * d ** 3) - 1
 
     lo, hi = 0.2, 1.0                     # residual(lo) > 0 (too much drag), residual(hi) < 0
     if not (residual(lo) > 0 > residual(hi)):
@@ -102,11 +103,11 @@ def eps_drag_equilibrium(U, law="DiFelice"):
     return 0.5 * (lo + hi)
 
 
-def terminal_velocity():
+def terminal_velocity(d=D):
     """u_t (m/s) and Re_t of Khan & Richardson (1987)."""
-    ar = (RHO_P / RHO_F - 1) * G * D ** 3 / NU ** 2
+    ar = (RHO_P / RHO_F - 1) * G * d ** 3 / NU ** 2
     re_t = (2.33 * ar ** 0.018 - 1.53 * ar ** -0.016) ** 13.3
-    return re_t * NU / D, re_t, ar
+    return re_t * NU / d, re_t, ar
 
 
 def rz_exponent(re_t):
@@ -115,8 +116,8 @@ def rz_exponent(re_t):
     return (5.1 + 2.7 * a) / (1 + a)
 
 
-def eps_richardson_zaki(U):
-    u_t, re_t, _ = terminal_velocity()
+def eps_richardson_zaki(U, d=D):
+    u_t, re_t, _ = terminal_velocity(d)
     return (U / u_t) ** (1 / rz_exponent(re_t))
 
 

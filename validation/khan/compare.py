@@ -12,12 +12,14 @@ contacts differ); velocities, methods, background fields and ranks may differ. O
 
 - summary.csv, one row per run and species, with the columns
   method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,
-  mixing_width_mm,window_s,wall_s,coupling_share
+  mixing_width_mm,window_s,wall_s,coupling_share,wall_force_share
   alpha_p_reference: Richardson-Zaki with the Garside-Al-Dibouni exponent (the paper's Fig. 16
   line; references.py); dp_pa, dp_reference_pa, mixing_width_mm: the whole bed's (the same on both
   rows of a run); coupling_share: on the solver's last "Stage timers" line, every stage but DEM,
   fluid and fields over the sum of all stages (a continued run: each start's last line, summed;
-  postprocess.py);
+  postprocess.py); wall_force_share: the walls' share of the bed's buoyant weight in the window
+  (their z forces on the particles, DEM/tubeWalls.liggghts; empty for a run made before the walls
+  stored them);
   wall_s: the run's wall seconds from its solver log (postprocess.py: pauses and stretches computed
   twice left out); window_s: from the window's first to its last dump;
   method: the run's method, "+background" with background fields (bed.csv's background column, or
@@ -39,7 +41,7 @@ import csv, importlib.util, math, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 HEADER = ("method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,"
-          "mixing_width_mm,window_s,wall_s,coupling_share")
+          "mixing_width_mm,window_s,wall_s,coupling_share,wall_force_share")
 
 
 def _load(path, name):
@@ -108,7 +110,8 @@ def summary_rows(runs):
                             alpha_p_reference="%.5f" % float(l["alpha_p_richardson_zaki"]),
                             layer_top_mm=l["top_mm"], dp_pa=b["dp_pa"], dp_reference_pa=b["dp_weight_pa"],
                             mixing_width_mm=b["mixing_width_mm"], window_s=b["window_s"], wall_s=b["wall_s"],
-                            coupling_share="%.4f" % r["share"]))
+                            coupling_share="%.4f" % r["share"],
+                            wall_force_share=b.get("wall_force_share", "") or ""))
     return out
 
 
