@@ -28,6 +28,13 @@ refused coupled-couplings "-couplings needs a positive number" "$coupled" -coupl
 refused coupled-novalue "-np needs a value" "$coupled" -np
 refused coupled-state "-state -0.4: needs a time in s after the start" "$coupled" -state -0.4
 refused coupled-option "unknown option '-model'" "$coupled" -model centre
+cases="$top/bench/cases/run.sh"
+refused cases-case "unknown case 'ergun' (muller khan)" "$cases" -cases "muller ergun"
+refused cases-np "np 3: 1 or 2 ranks" "$cases" -np "1 3"
+refused cases-stretch "'-0.1' must be a time in s > 0" "$cases" -stretch -0.1
+refused cases-novalue "-cases needs a value" "$cases" -cases
+refused cases-option "unknown option '-method'" "$cases" -method divided
+refused demstep-case "invalid choice: 'ergun'" /usr/bin/python3 "$top/bench/demStep/collision.py" ergun
 
 make -s -C "$top/bench" > "$work/make.log" 2>&1 || { result fail "bench: kernel_bench does not build"; cat "$work/make.log"; finish; }
 kb="$top/bench/build/kernel_bench"
