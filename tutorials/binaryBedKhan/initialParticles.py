@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """initialParticles.py -- the start state of binaryBedKhan as a LIGGGHTS data file (read_data).
 
-    initialParticles.py MODE > DEM/particles.data        MODE: demo, short or full
+    initialParticles.py MODE > DEM/particles.data        MODE: demo, short, long or full
 
 Zhang et al., Phys. Fluids 35, 113330 (2023), Table III: 1146 spheres of 1 mm (atom type 1, "big")
 and 42441 of 0.3 mm (type 2, "small"), 2000 kg/m3, in the 10 x 10 x 120 mm tube. Centres are drawn
@@ -11,7 +11,7 @@ wall.
 
 - full: both species mixed over the whole tube, as the paper ("the particles are uniformly
   distributed in the tube initially"): solid fraction 0.05 per species.
-- short: pre-segregated, as the steady state is: the big species in 0 < z < 22 mm (solid fraction
+- short (and long): pre-segregated, as the steady state is: the big species in 0 < z < 22 mm (solid fraction
   0.27, about the densest random sequential fill that works here: 0.30 did not fit;
   liquidFluidizedBed starts so too), the small one above it in 22 < z < 52 mm (0.20). Both layers start looser than their fluidized equilibrium at 0.010-0.020
   m/s (big 0.44-0.56, small 0.09-0.25; validation/khan/references.py), so each settles onto its
@@ -30,11 +30,11 @@ def species_layers(mode):
     """[(type, d, N, z_lo, z_hi)] of the start state of a mode: each species' centres in its slab."""
     if mode == "full":
         return [(t, d, n, 0.0, TUBE[2]) for _, t, d, n in TABLE3]
-    if mode == "short":
+    if mode in ("short", "long"):
         return [(1, 1.0e-3, 1146, 0.0, 0.022), (2, 0.3e-3, 42441, 0.022, 0.052)]
     if mode == "demo":
         return DEMO
-    raise SystemExit("initialParticles.py: unknown mode '%s' (demo short full)" % mode)
+    raise SystemExit("initialParticles.py: unknown mode '%s' (demo short long full)" % mode)
 
 
 DEMO = [(1, 1.0e-3, 1146, 0.0, 0.022), (2, 0.3e-3, 5305, 0.022, 0.02575)]

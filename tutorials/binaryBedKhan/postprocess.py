@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """postprocess.py -- species-resolved layers and pressure of one binaryBedKhan run.
 
-    postprocess.py RUN -method M -U U -mode demo|short|full -tstart T0 -tend T1 -demdt DT
+    postprocess.py RUN -method M -U U -mode demo|short|long|full -tstart T0 -tend T1 -demdt DT
 
 Reads the particle dumps (RUN/post/dump*.liggghts: id, type, x, y, z, radius), the pressure on the
 inlet face (RUN/postProcessing/pInlet/<start>/surfaceFieldValue*.dat), the window means of p and
