@@ -63,6 +63,8 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import references as ref
+sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."), "etc", "python"))
+from particle_pairs import close_pairs
 
 A, W, HT = ref.A, 0.010, 0.120
 Z_ABOVE = 0.0305
@@ -124,21 +126,17 @@ def batch_sem(x):
     return float(np.std(means, ddof=1) / math.sqrt(NB))
 
 
-def pair_blocks(c):
-    """The centre distances of all particle pairs of a dump in blocks of 256 rows, so memory stays
-    small: (first row, distances, sums of the radii), a particle's distance to itself infinite."""
-    p = np.stack([c["x"], c["y"], c["z"]], axis=1)
-    r = c["radius"]
-    for i in range(0, len(r), 256):
-        d = np.sqrt(((p[i:i + 256, None, :] - p[None, :, :]) ** 2).sum(-1))
-        rows = np.arange(len(d))
-        d[rows, rows + i] = np.inf
-        yield i, d, r[i:i + 256, None] + r[None, :]
+def touching(c):
+    """(a, b, distance, sum of the radii) of the particle pairs of a dump in contact (a cell list:
+    etc/python/particle_pairs.py)."""
+    a, b, d = close_pairs(np.stack([c["x"], c["y"], c["z"]], axis=1), c["radius"])
+    return a, b, d, c["radius"][a] + c["radius"][b]
 
 
 def max_overlap(c):
     x, y, z, r = c["x"], c["y"], c["z"], c["radius"]
-    best = max(float((rr - d).max()) for _, d, rr in pair_blocks(c))
+    _, _, d, rr = touching(c)
+    best = float((rr - d).max()) if len(d) else -np.inf
     wall = np.concatenate([r - x, r - (W - x), r - y, r - (W - y), r - z, r - (HT - z)])
     return max(best, float(wall.max())) / (2 * r.mean())
 
@@ -172,13 +170,8 @@ def read_wall_forces(run, demdt):
 def contact_pairs(c):
     """Set of particle-id pairs in contact (centre distance below the sum of the radii)."""
     ids = c["id"].astype(np.int64)
-    out = set()
-    for i, d, rr in pair_blocks(c):
-        a, b = np.nonzero(d < rr)
-        a = a + i
-        keep = a < b
-        out.update(zip(ids[a[keep]].tolist(), ids[b[keep]].tolist()))
-    return out
+    a, b, _, _ = touching(c)
+    return set(zip(ids[a].tolist(), ids[b].tolist()))
 
 
 def contact_stats(wd, times, lag):
