@@ -96,6 +96,7 @@ read_wall_forces = _mono.read_wall_forces
 ref = _load(os.path.join(TOP, "validation", "khan", "references.py"), "khan_references")
 # the project's reader of written fields (ascii or binary)
 _fields = _load(os.path.join(TOP, "etc", "python", "foam_fields.py"), "foam_fields")
+close_pairs = _load(os.path.join(TOP, "etc", "python", "particle_pairs.py"), "particle_pairs").close_pairs
 # the wall time and stage timers of a run from its solver log, as the Mueller validation reads them
 _summary = _load(os.path.join(TOP, "validation", "muller", "summary.py"), "muller_summary")
 run_wall, stage_times, NOT_COUPLING = _summary.run_wall, _summary.stage_times, _summary.NOT_COUPLING
@@ -275,39 +276,11 @@ def leaving_messages(dumps, tstart, tend):
 
 def pair_overlap(c):
     """(largest overlap of two particles / the smaller one's diameter, pairs above 5 % of it) of a
-    dump: particles sorted into cells of the largest diameter (every touching pair lies in the same
-    or adjacent cells), then each cell against itself and its 13 forward neighbours, in chunks."""
-    x = np.stack([c["x"], c["y"], c["z"]], axis=1)
+    dump (the touching pairs from a cell list: etc/python/particle_pairs.py)."""
     r = c["radius"]
-    key = np.floor(x / (2 * r.max())).astype(int)
-    key -= key.min(axis=0)
-    dims = key.max(axis=0) + 1
-    flat = (key[:, 2] * dims[1] + key[:, 1]) * dims[0] + key[:, 0]
-    order = np.argsort(flat, kind="stable")
-    cells, start, count = np.unique(flat[order], return_index=True, return_counts=True)
-    pad = np.full((len(cells), count.max()), -1)
-    pad[np.repeat(np.arange(len(cells)), count), np.arange(len(order)) - np.repeat(start, count)] = order
-    ijk = np.stack([cells % dims[0], (cells // dims[0]) % dims[1], cells // (dims[0] * dims[1])], axis=1)
-    offsets = [(i, j, k) for k in (0, 1) for j in (-1, 0, 1) for i in (-1, 0, 1) if (k, j, i) >= (0, 0, 0)]
-    worst, n_bad = 0.0, 0
-    for off in offsets:
-        nb = ijk + np.array(off)
-        ok = ((nb >= 0) & (nb < dims)).all(axis=1)
-        nflat = (nb[:, 2] * dims[1] + nb[:, 1]) * dims[0] + nb[:, 0]
-        at = np.clip(np.searchsorted(cells, nflat), 0, len(cells) - 1)
-        ok &= cells[at] == nflat
-        src, dst = np.nonzero(ok)[0], at[ok]
-        for lo in range(0, len(src), 500):
-            a, b = pad[src[lo:lo + 500]], pad[dst[lo:lo + 500]]
-            valid = (a[:, :, None] >= 0) & (b[:, None, :] >= 0)
-            if off == (0, 0, 0):
-                valid &= np.triu(np.ones((a.shape[1], a.shape[1]), bool), 1)[None]
-            ia, ib = np.where(valid, a[:, :, None], 0), np.where(valid, b[:, None, :], 0)
-            dist = np.sqrt(((x[ia] - x[ib]) ** 2).sum(axis=-1))
-            rel = np.where(valid, (r[ia] + r[ib] - dist) / (2 * np.minimum(r[ia], r[ib])), -1.0)
-            worst = max(worst, float(rel.max()))
-            n_bad += int((rel > 0.05).sum())
-    return worst, n_bad
+    a, b, d = close_pairs(np.stack([c["x"], c["y"], c["z"]], axis=1), r)
+    rel = (r[a] + r[b] - d) / (2 * np.minimum(r[a], r[b]))
+    return (max(0.0, float(rel.max())) if len(rel) else 0.0), int((rel > 0.05).sum())
 
 
 def pressure_files(run):
