@@ -110,7 +110,7 @@ int main(int argc, char *argv[])
         const scalar done = runTime.value() - t0, left = runTime.endTime().value() - runTime.value();
         Info<< "Progress: t = " << runTime.timeName() << " s of " << runTime.endTime().value()
             << " s, " << label(runTime.timeIndex()) << " steps, wall " << wall << " s, estimated left "
-            << (done > 0 ? wall/done*left : 0) << " s" << nl;
+            << (done > 0 && left > 0 ? wall/done*left : 0) << " s" << nl;   // 0 at the end, not -1e-14
         if (runTime.writeTime())
         {
             coupling.report(Info);
