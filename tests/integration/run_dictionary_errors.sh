@@ -182,6 +182,8 @@ fi
 check gradP_and_Archimedes 's/GidaspowDrag gradPForce/GidaspowDrag gradPForce Archimedes/' "counted twice"
 check dem_script_missing 's|^demScript .*|demScript "DEM/nothere.liggghts";|' "DEM/nothere.liggghts\" not found"
 check dem_no_fix '' "defines no fix 'cfd' of style couple/coarse" "sed -i '/couple\/coarse/d' DEM/in.liggghts"
+check dem_fix_other_id '' "defines its couple/coarse fix with ID 'coupling', not 'cfd'" \
+    "sed -i 's/^fix *cfd all couple\/coarse/fix coupling all couple\/coarse/' DEM/in.liggghts"
 check dem_script_fails '' "ERROR: Invalid fix style" "echo 'fix bad all no_such_style' >> DEM/in.liggghts"
 # a particle inside the DEM box but outside the CFD mesh: named by id, with the time
 check particle_outside '' "1 particle(s) outside the mesh, ids: 2001" \

@@ -141,6 +141,20 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     fix_ = ifix < 0 ? nullptr : dynamic_cast<LAMMPS_NS::FixCoupleCoarse*>(lmp_->modify->fix[ifix]);
     if (!fix_)
     {
+        // a couple/coarse fix under another ID: name it, so that the remedy is one entry
+        word other;
+        for (int i = 0; i < lmp_->modify->nfix && other.empty(); ++i)
+        {
+            if (dynamic_cast<LAMMPS_NS::FixCoupleCoarse*>(lmp_->modify->fix[i])) other = lmp_->modify->fix[i]->id;
+        }
+        if (!other.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << "the DEM script " << script << " defines its couple/coarse fix with ID '" << other
+                << "', not '" << fixId << "' (demCouplingFix in " << dict.name() << ")" << nl
+                << "    set  demCouplingFix " << other << ";  in " << dict.name() << ", or rename the fix"
+                << exit(FatalIOError);
+        }
         FatalIOErrorInFunction(dict)
             << "the DEM script " << script << " defines no fix '" << fixId << "' of style couple/coarse" << nl
             << "    add:  fix " << fixId << " all couple/coarse   (or set demCouplingFix in "
