@@ -209,6 +209,8 @@ check props_unknown_key 's/bigParticleProps .*/bigParticleProps { expansionfacto
     "unknown entry expansionfactor in"
 check props_unknown_key_valid 's/bigParticleProps .*/bigParticleProps { expansionfactor 5; wallMirror true; }/' \
     "valid entries: expansionFactor, wallMirror"
+check props_unknown_keys_all 's/bigParticleProps .*/bigParticleProps { expansionfactor 5; wallmirror true; }/' \
+    "unknown entries expansionfactor, wallmirror in"
 check props_key_of_other_method 's/twoGridProps .*/twoGridProps { expansionFactor 3; }/; s/^voidFractionModel .*/voidFractionModel twoGrid;/' \
     "valid entries: searchFactor, wallMirror"
 check diffusion_props_unknown_key 's/^smoothingModel .*/smoothingModel diffusion;/; s/diffusionProps .*/diffusionProps { bandwidth 6e-3; smoothExchangeField true; }/' \
