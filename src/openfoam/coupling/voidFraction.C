@@ -56,6 +56,7 @@ cdc_kernel_params readKernelParams
     {
         Info<< " wallMirror " << (prm.wall_mirror ? "true" : "false") << (props.found("wallMirror") ? "" : " (default)");
     }
+    if (valid.empty()) Info<< " no parameters";   // centre, divided: say so rather than end the line
     Info<< endl;
     if (name == "gaussian" && !props.found("bandwidth"))
     {
