@@ -182,6 +182,10 @@ fi
 check gradP_and_Archimedes 's/GidaspowDrag gradPForce/GidaspowDrag gradPForce Archimedes/' "counted twice"
 check dem_script_missing 's|^demScript .*|demScript "DEM/nothere.liggghts";|' "DEM/nothere.liggghts\" not found"
 check dem_no_fix '' "defines no fix 'cfd' of style couple/coarse" "sed -i '/couple\/coarse/d' DEM/in.liggghts"
+# a DEM output into a folder that does not exist: named before LIGGGHTS runs (it would stop with
+# only MPI_ABORT's banner and an empty log)
+check dem_output_folder_missing '' "writes nosuchdir/x.txt, but its folder nosuchdir does not exist" \
+    "echo 'fix pr all print 10 \"\$(step)\" file nosuchdir/x.txt screen no' >> DEM/in.liggghts"
 check dem_fix_other_id '' "defines its couple/coarse fix with ID 'coupling', not 'cfd'" \
     "sed -i 's/^fix *cfd all couple\/coarse/fix coupling all couple\/coarse/' DEM/in.liggghts"
 check dem_script_fails '' "ERROR: Invalid fix style" "echo 'fix bad all no_such_style' >> DEM/in.liggghts"

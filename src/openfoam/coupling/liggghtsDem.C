@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
+#include <vector>
 
 #include "lammps.h"
 #include "input.h"
@@ -64,6 +66,56 @@ void reportDemExit()
 }
 }
 
+// The folders the DEM script writes into (dump files, fix print/ave/time ... file F), checked before
+// LIGGGHTS runs it: a missing one stops LIGGGHTS with only MPI_ABORT's banner and an empty log. Reads
+// the script and the files it includes by a literal path; paths built from variables are left to
+// LIGGGHTS.
+namespace Foam
+{
+static void checkOutputFolders
+(
+    const fileName& caseDir, const fileName& script, const dictionary& dict, int depth = 0
+)
+{
+    std::ifstream in(script);
+    std::string line;
+    int lineNo = 0;
+    while (std::getline(in, line))
+    {
+        ++lineNo;
+        const std::string::size_type hash = line.find('#');
+        if (hash != std::string::npos) line.erase(hash);
+        std::istringstream words(line);
+        std::vector<std::string> w;
+        for (std::string t; words >> t;) w.push_back(t);
+        if (w.empty()) continue;
+        std::vector<std::string> outputs;
+        if (w[0] == "dump" && w.size() >= 6) outputs.push_back(w[5]);
+        for (size_t i = 0; i + 1 < w.size(); ++i)
+        {
+            if (w[i] == "file") outputs.push_back(w[i + 1]);
+        }
+        if (w[0] == "include" && w.size() >= 2 && depth < 5 && w[1].find('$') == std::string::npos
+         && isFile(caseDir/w[1]))
+        {
+            checkOutputFolders(caseDir, caseDir/w[1], dict, depth + 1);
+        }
+        for (const std::string& out : outputs)
+        {
+            if (out.find('$') != std::string::npos || out.find('{') != std::string::npos) continue;
+            const fileName folder = fileName(out).path();
+            if (folder.empty() || folder == "." || isDir(folder.isAbsolute() ? folder : caseDir/folder)) continue;
+            FatalIOErrorInFunction(dict)
+                << "the DEM script " << script << " (line " << lineNo << ") writes " << out.c_str()
+                << ", but its folder " << folder.c_str() << " does not exist in the case " << caseDir
+                << " (LIGGGHTS would stop with no message)" << nl
+                << "    create it (mkdir -p " << folder.c_str() << " in the case) or write elsewhere"
+                << exit(FatalIOError);
+        }
+    }
+}
+}
+
 Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
 :
     lmp_(nullptr),
@@ -81,6 +133,7 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
             << "entry demScript in " << dict.name() << ": DEM input script " << script
             << " not found" << exit(FatalIOError);
     }
+    checkOutputFolders(caseDir, script, dict);
 
     // OpenFOAM starts MPI only for -parallel; LIGGGHTS needs it in every case.
     int started = 0;
