@@ -18,11 +18,11 @@ void checkDemNeighbours(LAMMPS_NS::LAMMPS* lmp, const dictionary& dict)
     const char* styleName = (style >= 0 && style <= 2) ? styles[style] : "unknown";
     if (style == 2)
     {
-        FatalIOErrorInFunction(dict)
+        FatalErrorInFunction
             << "the DEM script " << script << " sets 'neighbor ... multi': LIGGGHTS 3.8.0 builds"
             << " no granular contacts with it (its granular multi list is an empty function,"
             << " neigh_dummy.h), so the particles would pass through each other" << nl
-            << "    use 'neighbor <skin> bin'" << exit(FatalIOError);
+            << "    use 'neighbor <skin> bin'" << exit(FatalError);
     }
     // the particle radii (the estimate's extremes; the impact speed plays no part in them)
     const demTimestepEstimate e = estimateDemTimestep(lmp, 1.0);

@@ -27,13 +27,13 @@ void Foam::checkDemUnits(LAMMPS_NS::LAMMPS* lmp, const fvMesh& mesh, const dicti
         const scalar ratio = demSize[d]/meshSize[d];
         if (ratio > maxRatio || ratio < 1/maxRatio)
         {
-            FatalIOErrorInFunction(couplingDict)
+            FatalErrorInFunction
                 << "the DEM box is " << demSize << " m but the CFD mesh " << meshSize << " m ("
                 << ratio << " times along " << vector::componentNames[d] << "): the DEM script ("
                 << couplingDict.lookupOrDefault<fileName>("demScript", "") << ") and the mesh are in"
                 << " different units" << nl
                 << "    both must be in metres (LIGGGHTS units si; a mesh drawn in millimetres needs"
-                << " scale 0.001 in system/blockMeshDict, or transformPoints -scale)" << exit(FatalIOError);
+                << " scale 0.001 in system/blockMeshDict, or transformPoints -scale)" << exit(FatalError);
         }
     }
 
@@ -44,10 +44,10 @@ void Foam::checkDemUnits(LAMMPS_NS::LAMMPS* lmp, const fvMesh& mesh, const dicti
     const scalar meanCell = Foam::cbrt(gSum(mesh.V())/returnReduce(mesh.nCells(), sumOp<label>()));
     if (2*rMaxAll > maxRatio*meanCell)
     {
-        FatalIOErrorInFunction(couplingDict)
+        FatalErrorInFunction
             << "the largest DEM particle (diameter " << 2*rMaxAll << " m) is " << 2*rMaxAll/meanCell
             << " times the mean CFD cell (" << meanCell << " m): the DEM script and the mesh are most"
-            << " likely in different units (both must be in metres)" << exit(FatalIOError);
+            << " likely in different units (both must be in metres)" << exit(FatalError);
     }
 }
 

@@ -74,7 +74,7 @@ namespace Foam
 {
 static void checkOutputFolders
 (
-    const fileName& caseDir, const fileName& script, const dictionary& dict, int depth = 0
+    const fileName& caseDir, const fileName& script, int depth = 0
 )
 {
     std::ifstream in(script);
@@ -98,19 +98,19 @@ static void checkOutputFolders
         if (w[0] == "include" && w.size() >= 2 && depth < 5 && w[1].find('$') == std::string::npos
          && isFile(caseDir/w[1]))
         {
-            checkOutputFolders(caseDir, caseDir/w[1], dict, depth + 1);
+            checkOutputFolders(caseDir, caseDir/w[1], depth + 1);
         }
         for (const std::string& out : outputs)
         {
             if (out.find('$') != std::string::npos || out.find('{') != std::string::npos) continue;
             const fileName folder = fileName(out).path();
             if (folder.empty() || folder == "." || isDir(folder.isAbsolute() ? folder : caseDir/folder)) continue;
-            FatalIOErrorInFunction(dict)
+            FatalErrorInFunction
                 << "the DEM script " << script << " (line " << lineNo << ") writes " << out.c_str()
                 << ", but its folder " << folder.c_str() << " does not exist in the case " << caseDir
                 << " (LIGGGHTS would stop with no message)" << nl
                 << "    create it (mkdir -p " << folder.c_str() << " in the case) or write elsewhere"
-                << exit(FatalIOError);
+                << exit(FatalError);
         }
     }
 }
@@ -133,7 +133,7 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
             << "entry demScript in " << dict.name() << ": DEM input script " << script
             << " not found" << exit(FatalIOError);
     }
-    checkOutputFolders(caseDir, script, dict);
+    checkOutputFolders(caseDir, script);
 
     // OpenFOAM starts MPI only for -parallel; LIGGGHTS needs it in every case.
     int started = 0;
@@ -202,16 +202,16 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
         }
         if (!other.empty())
         {
-            FatalIOErrorInFunction(dict)
+            FatalErrorInFunction
                 << "the DEM script " << script << " defines its couple/coarse fix with ID '" << other
                 << "', not '" << fixId << "' (demCouplingFix in " << dict.name() << ")" << nl
                 << "    set  demCouplingFix " << other << ";  in " << dict.name() << ", or rename the fix"
-                << exit(FatalIOError);
+                << exit(FatalError);
         }
-        FatalIOErrorInFunction(dict)
+        FatalErrorInFunction
             << "the DEM script " << script << " defines no fix '" << fixId << "' of style couple/coarse" << nl
             << "    add:  fix " << fixId << " all couple/coarse   (or set demCouplingFix in "
-            << dict.name() << ")" << exit(FatalIOError);
+            << dict.name() << ")" << exit(FatalError);
     }
 }
 
@@ -231,7 +231,7 @@ void Foam::liggghtsDem::checkRestartRead(const fileName& restartFile, const dict
     // without the step file (a restart written before it existed) a fresh script is still at step 0
     if (written >= 0 ? now != written : now == 0)
     {
-        FatalIOErrorInFunction(dict)
+        FatalErrorInFunction
             << "the DEM continues from " << restartFile << " (written at DEM step "
             << (written >= 0 ? std::to_string(written) : std::string("unknown")).c_str() << ") but after its script "
             << dict.get<fileName>("demScript") << " the DEM is at step " << std::to_string(now).c_str()
@@ -239,7 +239,7 @@ void Foam::liggghtsDem::checkRestartRead(const fileName& restartFile, const dict
             << "    read it when the run continues, e.g." << nl
             << "        if \"${restarting} == 1\" then \"read_restart ${restart}\" else \"create_box ...\" \"create_atoms ...\"" << nl
             << "    (tutorials/ErgunTest/DEM), or set demFreshStart true in " << dict.name()
-            << " and remove the restart file to start the DEM from its initial state" << exit(FatalIOError);
+            << " and remove the restart file to start the DEM from its initial state" << exit(FatalError);
     }
 }
 
