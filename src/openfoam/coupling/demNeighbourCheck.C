@@ -39,7 +39,7 @@ void checkDemNeighbours(LAMMPS_NS::LAMMPS* lmp, const dictionary& dict)
             << "the DEM script " << script << " sets a neighbour skin of " << skin << " m, "
             << skin/dMin << " of the smallest diameter " << dMin << " m: the lists are rebuilt"
             << " every few steps (measured in the binary bed, bench/cases/README.md: a skin of"
-            << " d_min/6 cost 1.33 times the DEM time of d_min/3). A skin of d_min/3 to d_min/2"
+            << " d_min/6 cost 1.28 times the DEM time of d_min/3). A skin of d_min/3 to d_min/2"
             << " is usually cheaper" << endl;
     }
     if (style == 1 && dMax > 2*dMin)
