@@ -29,6 +29,7 @@ set -uo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
+. "$here/../solverLog.sh"   # run_solver, stage timers, loop wall time
 cases="muller khan"; nps="1 2"; stretch=0.1; khan_t=3
 while [ $# -gt 0 ]; do
     case "$1" in -cases|-np|-stretch|-khanState)
@@ -106,26 +107,11 @@ if [ -f "$csv" ] && [ "$(head -1 "$csv")" = "$header" ]; then
 else
     echo "$header" > "$csv"
 fi
-timers() { grep "Stage timers" "$1" | tail -1; }
-stage() { timers "$1" | /usr/bin/python3 -c "import re,sys; m = re.search(r'\b$2 ([0-9.eE+-]+)', sys.stdin.read()); print(m.group(1) if m else 'nan')"; }
-coupling_seconds() {
-    timers "$1" | /usr/bin/python3 -c "import re,sys; print('%.6g' % sum(float(v) for k, v in re.findall(r'(\w+) ([0-9.eE+-]+) \(', sys.stdin.read()) if k not in ('DEM', 'fluid', 'fields')))"
-}
-loop_wall() { grep "^Progress:" "$1" | tail -1 | sed -E 's/.* wall ([0-9.eE+-]+) s.*/\1/'; }
 record() { # case settings np simulated log
     local w
     w=$(loop_wall "$5")
     [ -n "$w" ] || { echo "bench/cases: no Progress line in $5" >&2; return 1; }
     echo "$1,$2,$3,$4,$w,$(/usr/bin/python3 -c "import sys; print('%.6g' % (float(sys.argv[1]) / float(sys.argv[2])))" "$w" "$4"),$(stage "$5" DEM),$(stage "$5" fluid),$(coupling_seconds "$5")" >> "$csv"
-}
-run_solver() { # dir np
-    ( cd "$1" || exit 1
-      if [ "$2" -gt 1 ]; then
-          decomposePar -force > log.decomposePar 2>&1 || exit 1
-          mpirun --allow-run-as-root --oversubscribe -np "$2" coarseDemFoam -parallel > log.coarseDemFoam 2>&1
-      else
-          coarseDemFoam > log.coarseDemFoam 2>&1
-      fi )
 }
 
 # the Mueller demo in a copy of the tutorial (its own Allrun: the state, the sampling, the demo's 0.1 s)
@@ -167,8 +153,9 @@ khan() { # settings np
     t0=$(cat "$khan_state/state_time")
     tend=$(add "$t0" "$stretch")
     rm -rf "$d"; mkdir -p "$d"
-    # the case files as the tutorial makes them now, the mesh and fields of the state
-    "$top/tutorials/binaryBedKhan/Allrun" -mode short -young 1e5 -method divided -U 0.015 -makeCase "$d" ||
+    # the case files as the tutorial makes them now (with its decomposeParDict for np > 1), the mesh
+    # and fields of the state
+    "$top/tutorials/binaryBedKhan/Allrun" -mode short -young 1e5 -method divided -U 0.015 -np "$2" -makeCase "$d" ||
         { echo "bench/cases: the tutorial did not make the binary bed's case" >&2; return 1; }
     rm -rf "$d/0"
     cp -r "$khan_state/constant/polyMesh" "$d/constant/"
@@ -177,7 +164,7 @@ khan() { # settings np
     mkdir -p "$d/post"
     [ "$1" = baseline ] && khan_baseline "$d"
     sed -i "s/^endTime .*/endTime         $tend;/" "$d/system/controlDict"
-    [ "$2" -gt 1 ] && printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains %d;\nmethod simple;\nsimpleCoeffs { n (%d 1 1); delta 0.001; }\n' "$2" "$2" > "$d/system/decomposeParDict"
+    if [ "$2" -gt 1 ]; then (cd "$d" && decomposePar -force > log.decomposePar 2>&1) || return 1; fi
     log "khan $1 np $2: $stretch s from t = $t0 s"
     run_solver "$d" "$2" || { echo "bench/cases: the binary bed failed ($d/log.coarseDemFoam)" >&2; return 1; }
     record khan "$1" "$2" "$stretch" "$d/log.coarseDemFoam"

@@ -23,6 +23,7 @@ set -uo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
+. "$here/../solverLog.sh"   # run_solver, stage timers, loop wall time
 tut="$top/tutorials/fluidizedBedMuller"
 couplings=150; methods="centre divided bigParticle twoGrid gaussian diffusion"; nps="1 2"; state_t=0.4
 while [ $# -gt 0 ]; do
@@ -62,15 +63,6 @@ make_case() { # dir method
     foamDictionary -entry functions -remove "$1/system/controlDict" > /dev/null 2>&1
     sed -i 's/^purgeWrite .*/purgeWrite 0;/' "$1/system/controlDict"
 }
-run_solver() { # dir np [args]: coarseDemFoam in dir, on np ranks
-    local d="$1" np="$2"; shift 2
-    ( cd "$d" || exit 1
-      if [ "$np" -gt 1 ]; then
-          mpirun --allow-run-as-root --oversubscribe -np "$np" coarseDemFoam -parallel "$@" > log.coarseDemFoam 2>&1
-      else
-          coarseDemFoam "$@" > log.coarseDemFoam 2>&1
-      fi )
-}
 
 # ---- the bubbling state: bigParticle from the settled bed to state_t (serial: a loaded machine makes
 #      MPI ranks wait for each other)
@@ -108,17 +100,6 @@ case_at_state() { # dir method np
     sed -i "s/^endTime .*/endTime $end_t;/; s/^writeInterval .*/writeInterval $end_t;/" "$1/system/controlDict"
     if [ "$3" -gt 1 ]; then (cd "$1" && decomposePar -force -time "$state_t" > log.decomposePar 2>&1) || return 1; fi
 }
-# the last "Stage timers" line of a log: name -> seconds
-timers() { grep "Stage timers" "$1" | tail -1; }
-stage() { # log name
-    timers "$1" | python3 -c "import re,sys; l=sys.stdin.read(); m=re.search(r'\b$2 ([0-9.eE+-]+)', l); print(m.group(1) if m else 'nan')"
-}
-# the coupling's stages: every stage timer but DEM, fluid and the output-only fields (stageTimers.H)
-coupling_seconds() {
-    timers "$1" | python3 -c "import re,sys; print('%.6g' % sum(float(v) for k, v in re.findall(r'(\w+) ([0-9.eE+-]+) \(', sys.stdin.read()) if k not in ('DEM', 'fluid', 'fields')))"
-}
-loop_wall() { grep "^Progress:" "$1" | tail -1 | sed -E 's/.* wall ([0-9.eE+-]+) s.*/\1/'; }
-
 csv="$results/coupled.csv"
 echo "method,np,couplings,total_s,dem_s,fluid_s,coupling_s,dem_alone_s,fluid_alone_s,pimpleFoam_s" > "$csv"
 
