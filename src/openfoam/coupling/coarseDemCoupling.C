@@ -193,8 +193,8 @@ coarseDemCoupling::coarseDemCoupling
     dem_.reset(new liggghtsDem(mesh, dict_));
     checkDemUnits(dem_->lammps(), mesh, dict_);    // DEM box and particles against the mesh
     checkDemCoarseGraining(dem_->lammps(), cgFactor_, dict_);
-    checkDemTimestep(dem_->lammps(), dict_);   // vs Rayleigh and Hertz times: warn / stop
-    checkDemNeighbours(dem_->lammps(), dict_); // neighbour style and skin vs the particle sizes
+    // vs Rayleigh and Hertz times (warn / stop), then the neighbour lists vs the particle sizes it measured
+    checkDemNeighbours(dem_->lammps(), dict_, checkDemTimestep(dem_->lammps(), dict_));
     keepRestartForces_ = dem_->restarted();
 
     printSummary(names);

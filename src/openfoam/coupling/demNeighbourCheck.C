@@ -1,5 +1,4 @@
 #include "demNeighbourCheck.H"
-#include "demTimeStepCheck.H"
 #include "error.H"
 #include "messageStream.H"
 
@@ -9,7 +8,7 @@
 namespace Foam
 {
 
-void checkDemNeighbours(LAMMPS_NS::LAMMPS* lmp, const dictionary& dict)
+void checkDemNeighbours(LAMMPS_NS::LAMMPS* lmp, const dictionary& dict, const demTimestepEstimate& e)
 {
     const LAMMPS_NS::Neighbor* neigh = lmp->neighbor;
     const fileName script = dict.lookupOrDefault<fileName>("demScript", "");
@@ -24,9 +23,8 @@ void checkDemNeighbours(LAMMPS_NS::LAMMPS* lmp, const dictionary& dict)
             << " neigh_dummy.h), so the particles would pass through each other" << nl
             << "    use 'neighbor <skin> bin'" << exit(FatalError);
     }
-    // the particle radii (the estimate's extremes; the impact speed plays no part in them)
-    const demTimestepEstimate e = estimateDemTimestep(lmp, 1.0);
-    if (e.nParticles == 0 || e.rMin <= 0)
+    // the particle radii: the time-step check's extremes (none when it could not measure)
+    if (!e.valid || e.rMin <= 0)
     {
         return;
     }

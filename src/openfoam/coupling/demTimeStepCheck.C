@@ -140,7 +140,7 @@ demTimestepEstimate estimateDemTimestep(LAMMPS_NS::LAMMPS* lmp, scalar maxImpact
     return e;
 }
 
-void checkDemTimestep(LAMMPS_NS::LAMMPS* lmp, const dictionary& dict)
+demTimestepEstimate checkDemTimestep(LAMMPS_NS::LAMMPS* lmp, const dictionary& dict)
 {
     const scalar warnFraction = dict.lookupOrDefault<scalar>("demTimeStepWarnFraction", 0.1);
     const scalar maxFraction = dict.lookupOrDefault<scalar>("demTimeStepMaxFraction", 0.3);
@@ -168,7 +168,7 @@ void checkDemTimestep(LAMMPS_NS::LAMMPS* lmp, const dictionary& dict)
         WarningInFunction
             << "DEM time step " << e.dt << " s not checked against the Rayleigh and Hertz times: "
             << e.reason << endl;
-        return;
+        return e;
     }
 
     const scalar fR = e.dt/e.tRayleigh, fH = e.dt/e.tHertz, f = e.fraction();
@@ -201,6 +201,7 @@ void checkDemTimestep(LAMMPS_NS::LAMMPS* lmp, const dictionary& dict)
             << ": contacts may be under-resolved (energy gain, particles passing through each other)."
             << " Recommended DEM timestep <= " << warnFraction*e.tCritical() << " s" << endl;
     }
+    return e;
 }
 
 } // End namespace Foam
