@@ -92,7 +92,7 @@ def _load(path, name):
 # the dump reader, the surfaceFieldValue reader and batch means of the monodisperse bed's post-processing
 _mono = _load(os.path.join(TOP, "tutorials", "liquidFluidizedBed", "postprocess.py"), "liquid_bed_postprocess")
 read_dumps, read_fv, batch_sem, NB = _mono.read_dumps, _mono.read_fv, _mono.batch_sem, _mono.NB
-read_wall_forces = _mono.read_wall_forces
+read_wall_forces, wall_force_share = _mono.read_wall_forces, _mono.wall_force_share
 ref = _load(os.path.join(TOP, "validation", "khan", "references.py"), "khan_references")
 # the project's reader of written fields (ascii or binary)
 _fields = _load(os.path.join(TOP, "etc", "python", "foam_fields.py"), "foam_fields")
@@ -460,8 +460,7 @@ def main():
         ww = (tw >= a.tstart - 1e-9) & (tw <= a.tend + 1e-9)
         weight = (ref.RHO_P - ref.RHO_F) * ref.G * sum(vol)
         if ww.sum() >= 2 * NB:
-            wall_share = float(wf[ww, :6].sum(axis=1).mean()) / weight
-            wall_share_sem = batch_sem(wf[ww, :6].sum(axis=1)) / weight
+            wall_share, wall_share_sem = wall_force_share(wf[ww], weight)
         if wall_share > 0.03:
             warnings.append("the walls carry %.1f %% of the bed's buoyant weight in the window (distributor %.1f %%): "
                             "a packed or jammed layer, not a fluidized one" % (100 * wall_share,

@@ -167,6 +167,14 @@ def read_wall_forces(run, demdt):
     return a[:, 0] * demdt, a[:, 1:]
 
 
+def wall_force_share(wf, weight):
+    """The walls' share of a bed's buoyant weight over wall-force samples wf (read_wall_forces'
+    columns, the window's rows): the mean of their z forces (the first six columns) over the weight,
+    and its batch-means error."""
+    z = wf[:, :6].sum(axis=1)
+    return float(z.mean()) / weight, batch_sem(z) / weight
+
+
 def contact_pairs(c):
     """Set of particle-id pairs in contact (centre distance below the sum of the radii)."""
     ids = c["id"].astype(np.int64)
@@ -247,8 +255,7 @@ def main():
     weight_buoyant = (ref.RHO_P - ref.RHO_F) * ref.G * vs
     sup_bottom, side_z = wmean[0] / A, float(wmean[2:6].sum()) / A
     sup_side = float(np.abs(wmean[6:10]).sum()) / A
-    wall_share = float(wmean[:6].sum()) / weight_buoyant
-    wall_share_sem = batch_sem(wf[ww, :6].sum(axis=1)) / weight_buoyant
+    wall_share, wall_share_sem = wall_force_share(wf[ww], weight_buoyant)
     zbins = np.arange(0, z_top + 1e-12, 0.001)
     carried = np.zeros(len(zbins) - 1); weight_bin = np.zeros(len(zbins) - 1); count_bin = np.zeros(len(zbins) - 1)
     fz_sum = mg_sum = fz_bot = mg_bot = 0.0
