@@ -3,6 +3,7 @@
 
     postprocess.py RUN -method M -modelType A|B -U U -tstart T0 -tend T1 -demdt DT -wall S -mode short|full
                    [-width W]     (the tube's width in mm, Allrun -width; default 10)
+                   [-cellSize DX] (the cells' size in mm, Allrun -cellSize; default 1)
                    [-drag L]      (the run's drag law, Allrun -drag: DiFelice (default), Gidaspow,
                                    KochHill; eps_drag_equilibrium is that law's)
 
@@ -54,6 +55,13 @@ dumps every 0.02 s, and the pressure the fluid solver samples every 0.01 s):
 - v_rms: the rms particle speed over the particles and the dumps of the window (how lively the bed is);
   v_fluct_rms: the rms of the particle velocity minus its own mean over the window (the motion that is
   not a slow drift of the whole bed).
+- Lateral flow (from the fields written in the window, every 0.25 s; nan where none were
+  reconstructed): with q = alpha U_z the superficial velocity of a cell and the bed's cells those
+  below 0.9 H_c, column_flux_min/max = the smallest and largest column mean of q over the bed's
+  height, time-averaged, over U (1 and 1 in a homogeneous bed; a column whose water sinks has a
+  negative value); flux_seen = the particle-weighted mean of q (alpha_p q summed over the bed's cells
+  over alpha_p summed) over U: the share of the water's flux that passes where the particles are
+  (1 in a homogeneous bed; below 1 where the water bypasses the dense columns).
 - Max overlap: d - the smallest centre distance (particle pairs) and r - the smallest wall distance,
   over the dumps in the window, in % of d.
 """
@@ -65,6 +73,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import references as ref
 sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."), "etc", "python"))
 from particle_pairs import close_pairs
+from foam_fields import FieldFormatError, read_internal_field
 
 A, W, HT = ref.A, 0.010, 0.120
 Z_ABOVE = 0.0305
@@ -116,6 +125,35 @@ def read_fv(path, column=1):
         t.append(ti)
         v.append(vi)
     return np.array(t), np.array(v)
+
+
+def lateral_flow(run, tstart, tend, width, U, hc, dx=0.001, height=HT):
+    """(column_flux_min, column_flux_max, flux_seen, number of field times) over the window from the
+    fields alpha and U that the run wrote (the docstring's definitions); nans and 0 where none. The
+    mesh is the tube's block, round(width/dx) x round(width/dx) x round(height/dx) cells, x fastest."""
+    nx, nz = int(round(width / dx)), int(round(height / dx))
+    n = nx * nx * nz
+    kbed = max(1, int(0.9 * hc / dx))
+    cols, seen = [], []
+    for d in glob.glob(os.path.join(run, "[0-9]*")):
+        try:
+            t = float(os.path.basename(d))
+        except ValueError:
+            continue
+        if not (tstart - 1e-9 <= t <= tend + 1e-9) or not os.path.exists(os.path.join(d, "U")):
+            continue
+        try:
+            af = read_internal_field(os.path.join(d, "alpha"), n).reshape(nz, nx, nx)[:kbed]
+            uz = read_internal_field(os.path.join(d, "U"), n)[:, 2].reshape(nz, nx, nx)[:kbed]
+        except FieldFormatError as e:
+            sys.exit("postprocess.py: %s" % e)
+        q = af * uz
+        cols.append(q.mean(axis=0))
+        seen.append(float(np.sum((1 - af) * q) / np.sum(1 - af)))
+    if not cols:
+        return float("nan"), float("nan"), float("nan"), 0
+    c = np.mean(cols, axis=0) / U
+    return float(c.min()), float(c.max()), float(np.mean(seen)) / U, len(cols)
 
 
 def batch_sem(x):
@@ -202,6 +240,7 @@ def main():
     for k in ("U", "tstart", "tend", "demdt", "wall"):
         ap.add_argument("-" + k, type=float, required=True)
     ap.add_argument("-width", type=float, default=10.0)
+    ap.add_argument("-cellSize", type=float, default=1.0)
     ap.add_argument("-drag", default="DiFelice", choices=ref.DRAG_LAWS)
     a = ap.parse_args()
     global A, W
@@ -275,6 +314,7 @@ def main():
                        if len(c["z"]) == len(wd[0]["z"])])
     v_fluct = math.sqrt(float(np.mean(((vstack - vstack.mean(axis=0)) ** 2).sum(-1))))
     twin = [t for (t, c), w in zip(dumps, win) if w]
+    col_min, col_max, flux_seen, n_fields = lateral_flow(a.run, a.tstart, a.tend, W, a.U, hc_mean, dx=1e-3 * a.cellSize)
     coord, persist = contact_stats(wd, twin, 0.1)
 
     # pressure
@@ -313,13 +353,14 @@ def main():
         f.write("method,modelType,U,eps_plateau,eps_plateau_sem,H_c_mm,H_c_sem_mm,eps_drift,dp_sem,max_overlap_pct_d,"
                 "support_bottom_Pa,side_wall_normal_Pa,v_rms_mm_s,n_particles_start,n_particles_end,n_dumps_window,n_dp_samples_window,tstart,tend,"
                 "side_wall_z_Pa,wall_force_share,wall_force_share_sem,dp_plus_walls_rel_err,fluid_share,fluid_share_bottom,"
-                "v_fluct_rms_mm_s,coordination,contact_persist_0.1s,dp_plane,wall_friction_Pa\n")
+                "v_fluct_rms_mm_s,coordination,contact_persist_0.1s,dp_plane,wall_friction_Pa,"
+                "column_flux_min,column_flux_max,flux_seen,n_field_times\n")
         f.write("%s,%s,%.3f,%.4f,%.4f,%.3f,%.3f,%.4f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,%g,%g,"
-                "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%.3f,%.4f\n" % (
+                "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%.3f,%.4f,%.3f,%.3f,%.3f,%d\n" % (
             a.method, a.modelType, a.U, eps_pl, eps_pl_sem, 1e3 * hc_mean, 1e3 * hc_sem, drift, dp_sem, 100 * overlap,
             sup_bottom, sup_side, 1e3 * v_rms, n0, n_last, int(win.sum()), int(pw.sum()), a.tstart, a.tend,
             side_z, wall_share, wall_share_sem, dp_rel + wall_share, fluid_share, fluid_bottom,
-            1e3 * v_fluct, coord, persist, dp_plane, wall_friction))
+            1e3 * v_fluct, coord, persist, dp_plane, wall_friction, col_min, col_max, flux_seen, n_fields))
     with open(os.path.join(res, "forceProfile.csv"), "w") as f:
         f.write("z_mm,particles,fluid_share\n")
         for i in range(len(carried)):
@@ -341,10 +382,12 @@ def main():
           "H_c %.2f mm, drift in window %+.4f; dp %.2f +- %.2f Pa vs weight %.2f Pa (%+.2f %%); "
           "walls carry %.2f %% of the weight (distributor %.2f Pa, side walls %.2f Pa), dp + walls %+.2f %%; "
           "fluid carries %.3f of the weight (bottom layer %.3f); v_rms %.2f mm/s (fluctuation %.2f), "
-          "coordination %.2f, contacts kept over 0.1 s %.2f; max overlap %.2f %% d; wall %.0f s"
+          "coordination %.2f, contacts kept over 0.1 s %.2f; water flux by column %.2f..%.2f of U, where the "
+          "particles are %.2f (%d field times); max overlap %.2f %% d; wall %.0f s"
           % (name, eps_sim, eps_sem, a.drag, e_eq, eps_sim - e_eq, e_rz, eps_pl, 1e3 * hc_mean, drift, dp_sim, dp_sem,
              dp_weight, 100 * dp_rel, 100 * wall_share, sup_bottom, side_z, 100 * (dp_rel + wall_share),
-             fluid_share, fluid_bottom, 1e3 * v_rms, 1e3 * v_fluct, coord, persist, 100 * overlap, a.wall))
+             fluid_share, fluid_bottom, 1e3 * v_rms, 1e3 * v_fluct, coord, persist, col_min, col_max, flux_seen,
+             n_fields, 100 * overlap, a.wall))
     if a.mode == "short":
         ok = True
         def check(cond, what):
