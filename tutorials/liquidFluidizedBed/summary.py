@@ -5,8 +5,10 @@ liquidFluidizedBed from the runs of Allrun -all.
     summary.py TUTORIAL_DIR MODE [MODE ...]   several modes: each row from the first mode whose run
                                              exists (Allrun -summary: long, then full), written without
                                              a mode suffix; its window in the column window_s
-    summary.py TUTORIAL_DIR -ingredients RUN...  results/ingredients.csv and .md: one row per named run
-                                             (runs/RUN: the ingredient study, one input changed at a time)
+    summary.py TUTORIAL_DIR -ingredients [-output NAME] RUN...  results/NAME.csv and .md (default
+                                             ingredients): one row per named run (runs/RUN: an ingredient
+                                             study, one input changed at a time; the small species' study
+                                             is -output smallSpecies)
     summary.py TUTORIAL_DIR MODE -dragLaws   results/dragLaws.csv and dragLaws.md: bigParticle with
                                              each drag law (Allrun -dragLaws, and the matrix's Di Felice
                                              runs) against that law's own equilibrium voidage
@@ -111,12 +113,13 @@ SUMMARY_EXTRA = ("wall_force_share", "dp_plus_walls_rel_err", "eps_plateau", "v_
                  "contact_persist_0.1s")
 
 
-def ingredients(here, names):
-    """One row per run of the ingredient study: what differs from the baseline is in the run's name."""
+def ingredients(here, names, output="ingredients"):
+    """One row per run of an ingredient study: what differs from the baseline is in the run's name."""
     res = os.path.join(here, "results")
     cols = ("run", "commit", "method", "modelType", "U", "window_s", "eps_sim", "eps_minus_equilibrium",
             "eps_plateau_minus_eps_sim", "wall_force_share", "dp_rel_err", "dp_plus_walls_rel_err",
-            "fluid_share_bottom", "v_fluct_rms_mm_s", "coordination", "contact_persist_0.1s", "wall_s")
+            "fluid_share_bottom", "v_fluct_rms_mm_s", "coordination", "contact_persist_0.1s", "wall_s",
+            "eps_drag_equilibrium", "flux_seen", "column_flux_min", "column_flux_max")
     out = []
     for name in names:
         run = os.path.join(here, "runs", name)
@@ -134,27 +137,35 @@ def ingredients(here, names):
                     "wall_force_share": d["wall_force_share"], "dp_rel_err": r["dp_rel_err"],
                     "dp_plus_walls_rel_err": d["dp_plus_walls_rel_err"], "fluid_share_bottom": d["fluid_share_bottom"],
                     "v_fluct_rms_mm_s": d["v_fluct_rms_mm_s"], "coordination": d["coordination"],
-                    "contact_persist_0.1s": d["contact_persist_0.1s"], "wall_s": r["wall_s"]})
+                    "contact_persist_0.1s": d["contact_persist_0.1s"], "wall_s": r["wall_s"],
+                    "eps_drag_equilibrium": r["eps_drag_equilibrium"],
+                    # the lateral flow (runs made before it was measured: blank)
+                    "flux_seen": d.get("flux_seen", ""), "column_flux_min": d.get("column_flux_min", ""),
+                    "column_flux_max": d.get("column_flux_max", "")})
     if not out:
         return 1
-    with open(os.path.join(res, "ingredients.csv"), "w", newline="") as f:
+    with open(os.path.join(res, output + ".csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=cols, lineterminator="\n")
         w.writeheader()
         w.writerows(out)
-    with open(os.path.join(res, "ingredients.md"), "w") as f:
+    with open(os.path.join(res, output + ".md"), "w") as f:
         f.write("| run | eps - eq. | plateau - eps | walls carry | dp + walls | fluid, bottom layer | v_fluct (mm/s) "
-                "| coordination | contacts kept 0.1 s |\n|" + "---|" * 9 + "\n")
+                "| coordination | contacts kept 0.1 s | flux where the particles are |\n|" + "---|" * 10 + "\n")
         for o in out:
-            f.write("| %s | %s | %s | %.2f %% | %+.2f %% | %s | %s | %s | %s |\n" % (
+            f.write("| %s | %s | %s | %.2f %% | %+.2f %% | %s | %s | %s | %s | %s |\n" % (
                 o["run"], o["eps_minus_equilibrium"], o["eps_plateau_minus_eps_sim"], 100 * float(o["wall_force_share"]),
                 100 * float(o["dp_plus_walls_rel_err"]), o["fluid_share_bottom"], o["v_fluct_rms_mm_s"],
-                o["coordination"], o["contact_persist_0.1s"]))
+                o["coordination"], o["contact_persist_0.1s"], o["flux_seen"] or "-"))
     return 0
 
 
 def main():
     here = sys.argv[1]
     if sys.argv[2:3] == ["-ingredients"]:
+        if sys.argv[3:4] == ["-output"]:
+            if len(sys.argv) < 5:
+                sys.exit("summary.py: -output needs a name")
+            return ingredients(here, sys.argv[5:], sys.argv[4])
         return ingredients(here, sys.argv[3:])
     if sys.argv[3:] == ["-dragLaws"]:
         return drag_laws(here, sys.argv[2])
