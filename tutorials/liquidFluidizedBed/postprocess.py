@@ -62,6 +62,11 @@ dumps every 0.02 s, and the pressure the fluid solver samples every 0.01 s):
   negative value); flux_seen = the particle-weighted mean of q (alpha_p q summed over the bed's cells
   over alpha_p summed) over U: the share of the water's flux that passes where the particles are
   (1 in a homogeneous bed; below 1 where the water bypasses the dense columns).
+- Lateral clustering (from the dumps): the particle centres of the bed's core (0.15..0.85 H_c) counted
+  in boxes of 2.5 mm, layer by layer; count_ratio_2p5mm = the variance of the counts over their mean
+  within each layer, averaged over the layers and the window's dumps: about 0.1-0.4 for spheres
+  placed at random without overlap (the start state), 1 for independent (Poisson) positions, well
+  above 1 where the particles gather into columns or plates. Independent of the mesh.
 - Max overlap: d - the smallest centre distance (particle pairs) and r - the smallest wall distance,
   over the dumps in the window, in % of d.
 """
@@ -154,6 +159,28 @@ def lateral_flow(run, tstart, tend, width, U, hc, dx=0.001, height=HT):
         return float("nan"), float("nan"), float("nan"), 0
     c = np.mean(cols, axis=0) / U
     return float(c.min()), float(c.max()), float(np.mean(seen)) / U, len(cols)
+
+
+def count_ratio(dumps, width, box=0.0025):
+    """count_ratio_2p5mm of the docstring: the particle-count variance over its mean in box x box x box
+    cells of the bed's core (0.15..0.85 H_c), layer by layer, averaged over the layers and dumps."""
+    nb = max(1, int(round(width / box)))
+    ratios = []
+    for c in dumps:
+        z = c["z"]
+        hc = 2 * float(np.mean(z))
+        nz = int(0.7 * hc // box)
+        core = (z > 0.15 * hc) & (z < 0.15 * hc + nz * box)
+        if nz < 1 or not core.any():
+            continue
+        idx = lambda v: np.clip((v / box).astype(int), 0, nb - 1)
+        h = np.zeros((nz, nb * nb))
+        np.add.at(h, (np.clip(((z[core] - 0.15 * hc) / box).astype(int), 0, nz - 1),
+                      idx(c["x"][core]) * nb + idx(c["y"][core])), 1)
+        mean = h.mean(axis=1)
+        ok = mean > 0
+        ratios.append(float(np.mean(h.var(axis=1)[ok] / mean[ok])))
+    return float(np.mean(ratios)) if ratios else float("nan")
 
 
 def batch_sem(x):
@@ -314,6 +341,7 @@ def main():
                        if len(c["z"]) == len(wd[0]["z"])])
     v_fluct = math.sqrt(float(np.mean(((vstack - vstack.mean(axis=0)) ** 2).sum(-1))))
     twin = [t for (t, c), w in zip(dumps, win) if w]
+    clustering = count_ratio(wd, W)
     col_min, col_max, flux_seen, n_fields = lateral_flow(a.run, a.tstart, a.tend, W, a.U, hc_mean, dx=1e-3 * a.cellSize)
     coord, persist = contact_stats(wd, twin, 0.1)
 
@@ -354,13 +382,13 @@ def main():
                 "support_bottom_Pa,side_wall_normal_Pa,v_rms_mm_s,n_particles_start,n_particles_end,n_dumps_window,n_dp_samples_window,tstart,tend,"
                 "side_wall_z_Pa,wall_force_share,wall_force_share_sem,dp_plus_walls_rel_err,fluid_share,fluid_share_bottom,"
                 "v_fluct_rms_mm_s,coordination,contact_persist_0.1s,dp_plane,wall_friction_Pa,"
-                "column_flux_min,column_flux_max,flux_seen,n_field_times\n")
+                "column_flux_min,column_flux_max,flux_seen,n_field_times,count_ratio_2p5mm\n")
         f.write("%s,%s,%.3f,%.4f,%.4f,%.3f,%.3f,%.4f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,%g,%g,"
-                "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%.3f,%.4f,%.3f,%.3f,%.3f,%d\n" % (
+                "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%.3f,%.4f,%.3f,%.3f,%.3f,%d,%.3f\n" % (
             a.method, a.modelType, a.U, eps_pl, eps_pl_sem, 1e3 * hc_mean, 1e3 * hc_sem, drift, dp_sem, 100 * overlap,
             sup_bottom, sup_side, 1e3 * v_rms, n0, n_last, int(win.sum()), int(pw.sum()), a.tstart, a.tend,
             side_z, wall_share, wall_share_sem, dp_rel + wall_share, fluid_share, fluid_bottom,
-            1e3 * v_fluct, coord, persist, dp_plane, wall_friction, col_min, col_max, flux_seen, n_fields))
+            1e3 * v_fluct, coord, persist, dp_plane, wall_friction, col_min, col_max, flux_seen, n_fields, clustering))
     with open(os.path.join(res, "forceProfile.csv"), "w") as f:
         f.write("z_mm,particles,fluid_share\n")
         for i in range(len(carried)):
@@ -383,11 +411,11 @@ def main():
           "walls carry %.2f %% of the weight (distributor %.2f Pa, side walls %.2f Pa), dp + walls %+.2f %%; "
           "fluid carries %.3f of the weight (bottom layer %.3f); v_rms %.2f mm/s (fluctuation %.2f), "
           "coordination %.2f, contacts kept over 0.1 s %.2f; water flux by column %.2f..%.2f of U, where the "
-          "particles are %.2f (%d field times); max overlap %.2f %% d; wall %.0f s"
+          "particles are %.2f (%d field times), particle-count variance / mean in 2.5 mm boxes %.2f; max overlap %.2f %% d; wall %.0f s"
           % (name, eps_sim, eps_sem, a.drag, e_eq, eps_sim - e_eq, e_rz, eps_pl, 1e3 * hc_mean, drift, dp_sim, dp_sem,
              dp_weight, 100 * dp_rel, 100 * wall_share, sup_bottom, side_z, 100 * (dp_rel + wall_share),
              fluid_share, fluid_bottom, 1e3 * v_rms, 1e3 * v_fluct, coord, persist, col_min, col_max, flux_seen,
-             n_fields, 100 * overlap, a.wall))
+             n_fields, clustering, 100 * overlap, a.wall))
     if a.mode == "short":
         ok = True
         def check(cond, what):

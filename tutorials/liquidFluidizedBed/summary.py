@@ -119,7 +119,7 @@ def ingredients(here, names, output="ingredients"):
     cols = ("run", "commit", "method", "modelType", "U", "window_s", "eps_sim", "eps_minus_equilibrium",
             "eps_plateau_minus_eps_sim", "wall_force_share", "dp_rel_err", "dp_plus_walls_rel_err",
             "fluid_share_bottom", "v_fluct_rms_mm_s", "coordination", "contact_persist_0.1s", "wall_s",
-            "eps_drag_equilibrium", "flux_seen", "column_flux_min", "column_flux_max")
+            "eps_drag_equilibrium", "flux_seen", "column_flux_min", "column_flux_max", "count_ratio_2p5mm")
     out = []
     for name in names:
         run = os.path.join(here, "runs", name)
@@ -141,7 +141,7 @@ def ingredients(here, names, output="ingredients"):
                     "eps_drag_equilibrium": r["eps_drag_equilibrium"],
                     # the lateral flow (runs made before it was measured: blank)
                     "flux_seen": d.get("flux_seen", ""), "column_flux_min": d.get("column_flux_min", ""),
-                    "column_flux_max": d.get("column_flux_max", "")})
+                    "column_flux_max": d.get("column_flux_max", ""), "count_ratio_2p5mm": d.get("count_ratio_2p5mm", "")})
     if not out:
         return 1
     with open(os.path.join(res, output + ".csv"), "w", newline="") as f:
@@ -150,12 +150,12 @@ def ingredients(here, names, output="ingredients"):
         w.writerows(out)
     with open(os.path.join(res, output + ".md"), "w") as f:
         f.write("| run | eps - eq. | plateau - eps | walls carry | dp + walls | fluid, bottom layer | v_fluct (mm/s) "
-                "| coordination | contacts kept 0.1 s | flux where the particles are |\n|" + "---|" * 10 + "\n")
+                "| coordination | contacts kept 0.1 s | flux where the particles are | count variance / mean (2.5 mm) |\n|" + "---|" * 11 + "\n")
         for o in out:
-            f.write("| %s | %s | %s | %.2f %% | %+.2f %% | %s | %s | %s | %s | %s |\n" % (
+            f.write("| %s | %s | %s | %.2f %% | %+.2f %% | %s | %s | %s | %s | %s | %s |\n" % (
                 o["run"], o["eps_minus_equilibrium"], o["eps_plateau_minus_eps_sim"], 100 * float(o["wall_force_share"]),
                 100 * float(o["dp_plus_walls_rel_err"]), o["fluid_share_bottom"], o["v_fluct_rms_mm_s"],
-                o["coordination"], o["contact_persist_0.1s"], o["flux_seen"] or "-"))
+                o["coordination"], o["contact_persist_0.1s"], o["flux_seen"] or "-", o["count_ratio_2p5mm"] or "-"))
     return 0
 
 
