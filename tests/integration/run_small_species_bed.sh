@@ -6,7 +6,8 @@
 # under 2 %, the fluid carries the layer on the distributor, the bed expanded, the particles move (a
 # frozen bed fails). Its voidage check is not counted: this bed stays about 0.07 denser than its drag
 # law's equilibrium (the water circulates through looser columns and bypasses the dense ones:
-# tutorials/liquidFluidizedBed/README.md, the small species alone), a defect still open in issue 41;
+# tutorials/liquidFluidizedBed/README.md, the small species alone: every cell-by-cell method, any mesh,
+# walls or CFD step tried; the smoothed exchange removes the columns), a defect still open in issue 41;
 # the line is printed as KNOWN with its numbers. Prints "N passed, N failed".
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
