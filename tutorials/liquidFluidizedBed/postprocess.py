@@ -161,19 +161,19 @@ def lateral_flow(run, tstart, tend, width, U, hc, dx=0.001, height=HT):
     return float(c.min()), float(c.max()), float(np.mean(seen)) / U, len(cols)
 
 
-def count_ratio(dumps, width, box=0.0025):
+def count_ratio(dumps, heights, width, box=0.0025):
     """count_ratio_2p5mm of the docstring: the particle-count variance over its mean in box x box x box
-    cells of the bed's core (0.15..0.85 H_c), layer by layer, averaged over the layers and dumps."""
+    cells of the bed's core (0.15..0.85 H_c, heights: each dump's H_c), layer by layer, averaged over
+    the layers and dumps."""
     nb = max(1, int(round(width / box)))
+    idx = lambda v: np.clip((v / box).astype(int), 0, nb - 1)
     ratios = []
-    for c in dumps:
+    for c, hc in zip(dumps, heights):
         z = c["z"]
-        hc = 2 * float(np.mean(z))
         nz = int(0.7 * hc // box)
         core = (z > 0.15 * hc) & (z < 0.15 * hc + nz * box)
         if nz < 1 or not core.any():
             continue
-        idx = lambda v: np.clip((v / box).astype(int), 0, nb - 1)
         h = np.zeros((nz, nb * nb))
         np.add.at(h, (np.clip(((z[core] - 0.15 * hc) / box).astype(int), 0, nz - 1),
                       idx(c["x"][core]) * nb + idx(c["y"][core])), 1)
@@ -341,7 +341,7 @@ def main():
                        if len(c["z"]) == len(wd[0]["z"])])
     v_fluct = math.sqrt(float(np.mean(((vstack - vstack.mean(axis=0)) ** 2).sum(-1))))
     twin = [t for (t, c), w in zip(dumps, win) if w]
-    clustering = count_ratio(wd, W)
+    clustering = count_ratio(wd, s[win, 1], W)
     col_min, col_max, flux_seen, n_fields = lateral_flow(a.run, a.tstart, a.tend, W, a.U, hc_mean, dx=1e-3 * a.cellSize)
     coord, persist = contact_stats(wd, twin, 0.1)
 
