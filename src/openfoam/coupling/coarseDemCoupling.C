@@ -82,7 +82,6 @@ static const dictionary& checkCouplingEntries(IOdictionary& io)
         {"classRatio", "sizeAwareDiffusionProps"},
         {"reactionKernel", "backgroundFieldsProps"},
         {"reynoldsNumber", "DiFeliceDragProps"},
-        {"CL", "liftForceProps"},
         {"Cvm", "virtualMassForceProps"}
     };
     OStringStream unknown;
