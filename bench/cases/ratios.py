@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-"""bench/cases/ratios.py CSV: the cost table of bench/cases/run.sh as markdown.
+"""bench/cases/ratios.py CSV: the cost table of bench/cases/run.sh as markdown, and the CSV's column
+cost_ratio_to_baseline (each row's wall s per simulated s over the baseline's of the same case and
+rank count, from the same CSV; 1 for a baseline, empty without one) written into the CSV.
 
 Per case and rank count: wall seconds per simulated second with the baseline and the tutorial's
 settings and their ratio (issue 44's target: at most 0.5 on 2 ranks), the stage shares of each run;
@@ -11,9 +13,25 @@ from collections import defaultdict
 TARGET = 0.5
 
 
+RATIO = "cost_ratio_to_baseline"
+
+
+def write_ratio_column(path, rows, by):
+    """rewrite the CSV with RATIO as its last column (recomputed if it is there already)"""
+    fields = [k for k in rows[0] if k != RATIO] + [RATIO]
+    for r in rows:
+        b = by.get((r["case"], "baseline", r["np"]))
+        r[RATIO] = "%.4f" % (float(r["wall_per_simulated_s"]) / float(b["wall_per_simulated_s"])) if b else ""
+    with open(path, "w", newline="") as out:
+        w = csv.DictWriter(out, fieldnames=fields, lineterminator="\n")
+        w.writeheader()
+        w.writerows({k: r.get(k) or "" for k in fields} for r in rows)
+
+
 def main(path):
     rows = list(csv.DictReader(open(path)))
     by = {(r["case"], r["settings"], r["np"]): r for r in rows}
+    write_ratio_column(path, rows, by)
     f = lambda r, k: float(r[k])
     print("Cost per simulated second (wall s of the time loop / simulated s) and stage shares "
           "(DEM, fluid, coupling; of the stage timers' sum)\n")
