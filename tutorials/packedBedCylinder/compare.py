@@ -55,6 +55,6 @@ with open("results/summary.csv", "a") as f:
         f.write("method,np,U,eps,eps_wall_ring,eps_core,dp_Pa,dp_ergun_Pa,relative_error,wall_time_s\n")
     f.write(f"{method},{np_},{U:g},{eps:.5f},{mean_over(ring):.5f},{mean_over(core):.5f},{dp:.6g},{ergun:.6g},{err:.3e},{wall:.1f}\n")
 ok = abs(err) <= 0.05
-print(("PASS" if ok else "FAIL") + f" packedBedCylinder/{method}/np{np_}/U={U:g}: dp {dp:.4g} Pa, Ergun {ergun:.4g} Pa "
+print(("PASS: " if ok else "FAIL: ") + f"packedBedCylinder/{method}/np{np_}/U={U:g}: dp {dp:.4g} Pa, Ergun {ergun:.4g} Pa "
       f"(eps {eps:.4f}; wall ring {mean_over(ring):.4f}, core {mean_over(core):.4f}), error {100*err:+.2f} % (limit 5 %)")
 sys.exit(0 if ok else 1)
