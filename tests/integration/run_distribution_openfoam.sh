@@ -34,7 +34,7 @@ writeControl timeStep; writeInterval 1; writeFormat ascii; writePrecision 17; ti
 EOD
     printf 'FoamFile { version 2.0; format ascii; class volVectorField; object U; }\ndimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\nboundaryField { walls { type noSlip; } }\n' > "$c/0/U"
     printf 'FoamFile { version 2.0; format ascii; class volScalarField; object p; }\ndimensions [0 2 -2 0 0 0 0];\ninternalField uniform 0;\nboundaryField { walls { type fixedFluxPressure; value uniform 0; } }\n' > "$c/0/p"
-    props='bigParticleProps { expansionFactor 5; }'
+    props='bigParticleProps { expansionFactor 5; wallMirror false; }'
     cat > "$c/constant/couplingProperties" <<EOD
 FoamFile { version 2.0; format ascii; class dictionary; object couplingProperties; }
 modelType A; couplingInterval 1; demScript "DEM/in.liggghts"; implicitDrag true;

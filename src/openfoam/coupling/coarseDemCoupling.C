@@ -1,4 +1,5 @@
 #include "coarseDemCoupling.H"
+#include "setupAdvice.H"
 #include "particleCloud.H"
 #include "demTimeStepCheck.H"
 #include "demNeighbourCheck.H"
@@ -252,6 +253,7 @@ void coarseDemCoupling::couple
     outputFields(cp, cg);                      // alphaPUs, binned fields: no effect on the flow
     recordBalances(U);                         // solid volume and momentum for the Coupling line
     checkExplicitRange(alpha);
+    if (nCouplings_ == 1) adviseOnSetup(dict_, voidFraction_, mesh_.V(), particles_.radius);
     if (nCouplings_ == 1 || mesh_.time().writeTime())
     {
         checkParcelFill();

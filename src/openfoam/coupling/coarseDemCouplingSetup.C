@@ -93,10 +93,9 @@ void coarseDemCoupling::createBackgroundKernels()
 {
     if (!dict_.lookupOrDefault<Switch>("backgroundFields", false)) return;
     {
-        // n = 5 when not given (the paper's background kernel), not bigParticle's own 0
-        cdc_kernel_params n5 = {};
-        n5.expansion_factor = 5;
-        cdc_kernel_params prm = readKernelParams(dict_, "backgroundFields", "bigParticle", {"reactionKernel"}, n5);
+        // n = 5 when not given (the paper's background kernel), as voidFractionModel bigParticle
+        cdc_kernel_params prm = readKernelParams(dict_, "backgroundFields", "bigParticle", {"reactionKernel"},
+                                                 recommendedKernelParams("bigParticle"));
         // Where the particles' reaction goes into the fluid. voidFraction (the paper's): the cells of
         // the alpha_p kernels, with the explicit correction K (u_bg - u_k); a cell's gas then gets a
         // drag that does not grow with its own velocity, and with the centre kernel (one cell per

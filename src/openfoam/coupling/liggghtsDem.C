@@ -1,4 +1,5 @@
 #include "liggghtsDem.H"
+#include "demScriptHistory.H"
 #include "Time.H"
 #include "OSspecific.H"
 #include "Pstream.H"
@@ -7,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -181,13 +183,35 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     Info<< "DEM restart file: " << restart << nl;
     Info<< "Reading DEM script " << script << " (LIGGGHTS log: " << logFile
         << ")" << endl;
+    // a continued run appends to the script's fix print files (demScriptHistory.H): it reads a copy
+    // of the script with `file` turned into `append` there, written next to the case's log
+    fileName readScript = script;
+    if (restarted_)
+    {
+        std::ifstream in(script);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        label nAppend = 0;
+        const std::string appending = appendingHistory(text, nAppend);
+        if (nAppend > 0)
+        {
+            readScript = caseDir/(".continued." + script.name());
+            if (Pstream::master()) std::ofstream(readScript) << appending;
+            MPI_Barrier(MPI_COMM_WORLD);
+            Info<< "Continued run: the DEM script's " << nAppend << " fix print file(s) are appended to" << endl;
+        }
+    }
     const fileName cwd0 = cwd();
     chDir(caseDir);
     {
         demCall guard;
-        lmp_->input->file(script.c_str());
+        lmp_->input->file(readScript.c_str());
     }
     chDir(cwd0);
+    if (readScript != script)
+    {
+        MPI_Barrier(MPI_COMM_WORLD);
+        if (Pstream::master()) rm(readScript);
+    }
     if (restarted_) checkRestartRead(restartFile, dict);
 
     const int ifix = lmp_->modify->find_fix(fixId.c_str());

@@ -19,6 +19,15 @@ static const struct { const char* key; double cdc_kernel_params::*member; unsign
     {"cutoffFactor", &cdc_kernel_params::cutoff_factor, CDC_PARAM_CUTOFF_FACTOR},
 };
 
+cdc_kernel_params recommendedKernelParams(const word& method)
+{
+    cdc_kernel_params prm = {};
+    // bigParticle: the paper's optimised form, n = 5 (Zhang et al. 2023 recommend 4-5), not the
+    // core's original equal split (n = 0), which the docs advise against for coarse particles
+    if (method == "bigParticle") prm.expansion_factor = 5;
+    return prm;
+}
+
 cdc_kernel_params readKernelParams
 (
     const dictionary& dict, const word& name, const word& method, const wordList& otherKeys,
@@ -37,13 +46,15 @@ cdc_kernel_params readKernelParams
     Info<< (name == method ? word("voidFractionModel") : name) << " " << method << ":";
     cdc_kernel_params dflt = defaults;   // the caller's, then the method's own
     cdc_method_fill_defaults(method.c_str(), &dflt);
+    cdc_kernel_params coreDflt = {};      // what the core puts in place of a 0
+    cdc_method_fill_defaults(method.c_str(), &coreDflt);
     for (const auto& k : kernelKeys) prm.*k.member = props.lookupOrDefault<scalar>(k.key, dflt.*k.member);
     for (const auto& k : kernelKeys)
     {
         if (!(reads & k.bit)) continue;
-        // 0 stands for "not given" in the core: where the default is not 0, an explicit 0 would
-        // silently become it
-        if (props.found(k.key) && prm.*k.member == 0 && dflt.*k.member != 0)
+        // 0 stands for "not given" in the core: where the core has a default of its own, an explicit
+        // 0 would silently become it (bigParticle's expansionFactor 0 is a form of its own, allowed)
+        if (props.found(k.key) && prm.*k.member == 0 && coreDflt.*k.member != 0)
         {
             FatalIOErrorInFunction(props)
                 << k.key << " 0 in " << dict.name() << "/" << name << "Props is not a valid value (leave the entry"
@@ -51,7 +62,9 @@ cdc_kernel_params readKernelParams
         }
         Info<< " " << k.key << " " << prm.*k.member << (props.found(k.key) ? "" : " (default)");
     }
-    prm.wall_mirror = props.lookupOrDefault<Switch>("wallMirror", false) ? 1 : 0;
+    // mirrored at walls unless told otherwise: an expansion kernel cut off at a wall reads the wall's
+    // cells dilute and lets the fluid bypass a bed there (doc/methods.md)
+    prm.wall_mirror = props.lookupOrDefault<Switch>("wallMirror", true) ? 1 : 0;
     if (reads & CDC_PARAM_WALL_MIRROR)
     {
         Info<< " wallMirror " << (prm.wall_mirror ? "true" : "false") << (props.found("wallMirror") ? "" : " (default)");
@@ -113,7 +126,7 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
 :
     mesh_(mesh),
     method_(dict.get<word>("voidFractionModel")),
-    params_(readKernelParams(dict, method_, method_)),
+    params_(readKernelParams(dict, method_, method_, wordList(), recommendedKernelParams(method_))),
     kernels_(nullptr),
     smoothing_(smoothing::off),
     diffusion_(),
