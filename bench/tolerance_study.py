@@ -14,8 +14,8 @@ import os
 import re
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "validation", "muller"))
-from compare import read_profile  # noqa: E402  (the reader of profiles.py's CSV files)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "etc", "python"))
+from muller_compare import read_profile  # noqa: E402  (the reader of profiles.py's CSV files)
 
 HEIGHTS = ["15", "16.4", "20", "25", "31.2", "35"]
 QUANTITIES = ["voidfractiondepthbinned", "vzdepthbinned"]

@@ -1,5 +1,4 @@
-#!/usr/bin/python3
-"""stiffness.py -- does a softer contact stiffness, or a longer DEM step, change the binary bed? One run
+"""khan_stiffness.py (run as validation/khan/stiffness.py) -- does a softer contact stiffness, or a longer DEM step, change the binary bed? One run
 against another that differs in that setting only.
 
     stiffness.py OUT SOFT_RUN STIFF_RUN       Young's modulus: the softer run first (OUT/stiffness.md)
@@ -25,14 +24,9 @@ contacts change by design.
 OUT gets stiffness.md (the table and the verdict); the same lines are printed, the last one
 "stiffness.py: ... N of M quantities agree".
 """
-import importlib.util, math, os, sys
+import math, os, sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-# compare.py's read_run: one reader of a run's results for both scripts (loaded by path: another
-# "compare" module, validation/muller's, may already be imported where this one is)
-_spec = importlib.util.spec_from_file_location("khan_compare_for_stiffness", os.path.join(HERE, "compare.py"))
-compare = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(compare)
+from khan_runs import read_run  # one reader of a run's results for compare.py and this
 
 TOLERANCE = {"plateau": 0.01, "height": 0.5, "dp": 0.01, "mixing": 1.0}
 SAME_CASE = ("method", "background", "U", "mode")
@@ -118,7 +112,7 @@ def main(argv):
         print(__doc__.split("\n\n")[1], file=sys.stderr)
         return 2
     out = argv[0]
-    soft, stiff = compare.read_run(argv[1]), compare.read_run(argv[2])
+    soft, stiff = read_run(argv[1]), read_run(argv[2])
     soft["dir"], stiff["dir"] = argv[1], argv[2]
     setting = compared_setting(soft, stiff)
     rows = compare_runs(soft, stiff)
@@ -152,6 +146,3 @@ def main(argv):
     print("\n".join(lines))
     return 0
 
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))

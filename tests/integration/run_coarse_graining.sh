@@ -65,7 +65,7 @@ if [ $analyse -eq 0 ]; then
     for F in 1 2 3; do
         g="$work/grain$F"
         mkdir -p "$g"
-        (cd "$top/tutorials/settlingTest" && cp -r 0.orig DEM constant system Allrun Allclean compare.py settling_ode.py "$g/")
+        (cd "$top/tutorials/settlingTest" && cp -r 0.orig DEM constant system Allrun Allclean compare.py "$g/")
         rm -rf "$g/constant/polyMesh"
         d=$(awk -v f=$F 'BEGIN { printf "%g", 0.002 * f }')
         sed -i "s/set atom 1 diameter 0.002 /set atom 1 diameter $d /" "$g/DEM/in.liggghts"

@@ -1,23 +1,22 @@
 #!/usr/bin/python3
 """Unit checks of the Mueller validation scripts' bookkeeping of stopped and continued runs:
 profiles.drop_superseded (samples of a stopped segment re-sampled by its continuation) and
-summary.log_segments (wall seconds per start, cut where the continuation started, MPI ranks; a
-run's pauses taken off its wall time and its stage shares), summary.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs), and
+solver_log.log_segments (wall seconds per start, cut where the continuation started, MPI ranks; a
+run's pauses taken off its wall time and its stage shares), muller_plots.plot_profiles (cases at two inlet velocities, missing profiles, missing SEMs), and
 window.py on a synthetic run (errors per averaging window against ones computed here, its refusals;
 the same run with its samples folded by compactSamples.py),
 etc/runArchive (a stopped run packed and unpacked to continue elsewhere), and the binary bed's
 scripts (pressure samples of every start, runs of one case, the wall-corrected reference), and
 gasBypass.py (dense cells without a particle centre, fast cells) on four hand-made cells.
 Prints PASS/FAIL per check and "N passed, N failed"."""
-import csv, importlib.util, math, os, random, re, shutil, struct, subprocess, sys, tempfile, time
+import csv, math, os, random, re, shutil, struct, subprocess, sys, tempfile, time
 
 top = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-def load(name):
-    spec = importlib.util.spec_from_file_location(name, os.path.join(top, "validation", "muller", name + ".py"))
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-profiles, summary = load("profiles"), load("summary")
+# the functions under test live in the project's Python library, etc/python
+sys.path.insert(0, os.path.join(top, "etc", "python"))
+import muller_profiles as profiles  # noqa: E402
+import muller_plots  # noqa: E402
+import solver_log  # noqa: E402
 npass = nfail = 0
 def check(ok, what):
     global npass, nfail
@@ -56,7 +55,7 @@ with tempfile.TemporaryDirectory() as tmp:
         for i in range(21, 41):
             f.write("Progress: t = %g s of 0.4 s, %d steps, wall %g s, estimated left 1 s\n" % (i / 100, i, 5.0 * (i - 20)))
         f.write("ExecutionTime = 90 s  ClockTime = 101 s\n")
-    segs = summary.log_segments(log)
+    segs = solver_log.log_segments(log)
     clocks = [s["clock"] for s in segs]
     check(clocks == [200.0, 0.0, 101.0] and [s["nprocs"] for s in segs] == [1, 1, 2],
           "wall seconds per start %s (expected 200 = up to t = 0.2 where the run continued, 0, 101), "
@@ -75,7 +74,7 @@ with tempfile.TemporaryDirectory() as tmp:
                 k = 10.0 * i / 10 + (500.0 if i >= 20 else 0.0)
                 f.write("Stage timers (s, share): kernel %g (1%%) DEM %g (1%%) fluid 0 (0%%)\n" % (k, 9.0 * i))
         f.write("ExecutionTime = 540 s  ClockTime = 545 s\n")   # counts the 15 s of start-up too
-    seg = summary.log_segments(log)[0]
+    seg = solver_log.log_segments(log)[0]
     share = seg["stages"]["kernel"] / (seg["stages"]["kernel"] + seg["stages"]["DEM"])
     check(abs(seg["clock"] - seg["paused"] - 45.0) < 1e-9 and len(seg["pauses"]) == 1 and abs(share - 0.1) < 1e-12,
           "a paused run: wall %g s less %g s paused (expected 30 s of steps + 15 s of start-up: the closing "
@@ -90,8 +89,8 @@ with tempfile.TemporaryDirectory() as tmp:
             f.write("Time = %g\n\nProgress: t = %g s of 0.3 s, %d steps, wall %g s, estimated left 1 s\n" % (i / 100, i / 100, i, i - 10.0))
             if i % 10 == 0:
                 f.write("Stage timers (s, share): kernel %g (1%%) DEM %g (1%%) fluid 0 (0%%)\n" % (i - 10.0, 9.0 * (i - 10)))
-    segs = summary.log_segments(log)
-    st = summary.stage_times(segs)
+    segs = solver_log.log_segments(log)
+    st = solver_log.stage_times(segs)
     check(segs[0]["paused"] == 0 and abs(segs[0]["clock"] - 10.0) < 1e-9 and abs(st["kernel"] - 30.0) < 1e-9,
           "a continued run: the first start counted to 0.1 s (wall %g s, expected 10; paused %g s, expected 0), "
           "kernel %g s over both starts (expected 10 + 20)" % (segs[0]["clock"], segs[0]["paused"], st["kernel"]))
@@ -102,7 +101,7 @@ with tempfile.TemporaryDirectory() as tmp:
         f.write("nProcs : 1\nCreate time\n")
         for i in range(1, 101):
             f.write("Time = %g\n\nExecutionTime = 1 s  ClockTime = %d s\n" % (i / 100, i // 4 + (1000 if i > 50 else 0)))
-    seg = summary.log_segments(log)[0]
+    seg = solver_log.log_segments(log)[0]
     check(len(seg["pauses"]) == 1 and abs(seg["clock"] - seg["paused"] - 25) < 1,
           "DPMFoam, whole-second clock: %d pause(s) (expected 1 at t = 0.51), wall less pauses %g s (expected 25 +- 1)"
           % (len(seg["pauses"]), seg["clock"] - seg["paused"]))
@@ -130,7 +129,7 @@ with tempfile.TemporaryDirectory() as tmp:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     try:
-        n = summary.plot_profiles(out, rows, plt, "midThickness", data)
+        n = muller_plots.plot_profiles(out, rows, plt, "midThickness", data)
         made = os.path.exists(os.path.join(out, "profiles_all_models.png"))
         err = ""
     except Exception as e:   # any failure of the figure is this check's failure
@@ -478,14 +477,12 @@ with tempfile.TemporaryDirectory() as tmp:
 
 # the binary bed's scripts (tutorials/binaryBedKhan/postprocess.py, validation/khan/compare.py and
 # references.py): pressure samples of every start, runs of one case only, the wall-corrected line
-def load_path(rel, name):
-    spec = importlib.util.spec_from_file_location(name, os.path.join(top, rel))
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-khan_post = load_path("tutorials/binaryBedKhan/postprocess.py", "khan_postprocess")
-khan_compare = load_path("validation/khan/compare.py", "khan_compare")
-khan_ref = load_path("validation/khan/references.py", "khan_refs")
+import dem_series  # noqa: E402
+import khan_layers  # noqa: E402
+import khan_pressure  # noqa: E402
+import khan_references as khan_ref  # noqa: E402
+import khan_runs  # noqa: E402
+import numpy as np  # noqa: E402
 with tempfile.TemporaryDirectory() as tmp:
     # a first start 0..0.5 s; a second from 0.5 killed at 0.7 s; a third again from 0.5 s, whose file
     # OpenFOAM names surfaceFieldValue_0.5.dat in the same folder, killed while writing its last line
@@ -501,22 +498,22 @@ with tempfile.TemporaryDirectory() as tmp:
     series("0", "surfaceFieldValue.dat", steps(0.01, 0.5), 1.0)
     series("0.5", "surfaceFieldValue.dat", steps(0.51, 0.7), 2.0)
     series("0.5", "surfaceFieldValue_0.5.dat", steps(0.51, 1.0), 3.0, cut=True)
-    t, dp = khan_post.frictional_dp(tmp)
+    t, dp = khan_pressure.frictional_dp(tmp)
     p = (dp + khan_ref.RHO_F * khan_ref.G * khan_ref.HEIGHT) / khan_ref.RHO_F
     check(len(t) == 100 and abs(t[-1] - 1.0) < 1e-12 and (abs(p[t <= 0.5 + 1e-9] - 1.0) < 1e-9).all() and
-          (abs(p[t > 0.5 + 1e-9] - 3.0) < 1e-9).all() and not khan_post.sample_gaps(t),
+          (abs(p[t > 0.5 + 1e-9] - 3.0) < 1e-9).all() and not khan_pressure.sample_gaps(t),
           "binary bed pressure: the last start's surfaceFieldValue_0.5.dat replaces the killed start's samples "
           "from 0.51 s, its cut last line left out (%d samples to %g s, values %s)" % (len(t), t[-1], sorted(set(p.round(6)))))
-    gaps = khan_post.sample_gaps([0.1, 0.2, 0.3, 0.6, 0.7, 0.8])
+    gaps = khan_pressure.sample_gaps([0.1, 0.2, 0.3, 0.6, 0.7, 0.8])
     check(gaps == [(0.3, 0.6)], "binary bed pressure: a gap in the samples is found (%s)" % gaps)
     # a dense layer with a long dilute tail (sizeAwareDiffusion's big species at 0.015 m/s): its 5-95 %
     # interior ends in the tail, below half the plateau; the top lies where the dense part ends (the
     # walk from the interior's last cell extrapolated to -12.2 mm)
-    zc = khan_post.np.arange(120) * 1.0 + 0.5
+    zc = np.arange(120) * 1.0 + 0.5
     core = [0.497, 0.575, 0.629, 0.581, 0.600, 0.571, 0.572, 0.465, 0.340, 0.190, 0.110]
     tail = [0.092, 0.086, 0.084, 0.081, 0.079, 0.071, 0.064, 0.056, 0.046, 0.040, 0.035, 0.031, 0.028, 0.024, 0.019, 0.013]
-    prof = khan_post.np.array(core + tail + [0.0] * (120 - len(core) - len(tail)))
-    lay = khan_post.layer(zc, prof, [prof] * khan_post.NB)
+    prof = np.array(core + tail + [0.0] * (120 - len(core) - len(tail)))
+    lay = khan_layers.layer(zc, prof, [prof] * dem_series.NB)
     check(9.5 < lay["top"] < 10.5 and lay["bottom"] == 0.0,
           "binary bed layer of a dense core with a dilute tail: top %.2f mm (expected between 9.5 and 10.5, where "
           "the core falls below half the plateau %.3f), bottom %.2f mm (expected 0: the distributor)"
@@ -524,7 +521,7 @@ with tempfile.TemporaryDirectory() as tmp:
     bad = os.path.join(tmp, "bad.dat")
     open(bad, "w").write("0.1 1\n0.2 x\n0.3 1\n")
     try:
-        khan_post.read_fv(bad)
+        dem_series.read_fv(bad)
         raised = ""
     except ValueError as e:
         raised = str(e)
@@ -541,20 +538,20 @@ with tempfile.TemporaryDirectory() as tmp:
         open(os.path.join(d, "layers.csv"), "w").write("species\n")
         open(os.path.join(d, "profiles.csv"), "w").write("z_mm\n")
         return os.path.dirname(d)
-    a = khan_compare.read_run(fake_run("bigParticle_U0.015_short_background_np2_E1e5", "short", "on", "100000"))
-    b = khan_compare.read_run(fake_run("bigParticle_U0.015_short_np2", "short", "off", "1e+06"))
+    a = khan_runs.read_run(fake_run("bigParticle_U0.015_short_background_np2_E1e5", "short", "on", "100000"))
+    b = khan_runs.read_run(fake_run("bigParticle_U0.015_short_np2", "short", "off", "1e+06"))
     check(a["method"] == "bigParticle+background" and b["method"] == "bigParticle",
           "binary bed compare.py: background fields labelled from bed.csv with _np2_E1e5 after it (%s, %s)" % (a["method"], b["method"]))
     try:
-        khan_compare.one_case([a, b])
+        khan_runs.one_case([a, b])
         refused = ""
     except SystemExit as e:
         refused = str(e)
     check("mix modes or contact stiffnesses" in refused and "E = 100000 Pa" in refused and "E = 1e+06 Pa" in refused,
           "binary bed compare.py refuses runs of two contact stiffnesses, naming them: %r" % refused[:160])
-    check(khan_compare.one_case([a]) == ("short", "100000"), "binary bed compare.py: one case passes")
+    check(khan_runs.one_case([a]) == ("short", "100000"), "binary bed compare.py: one case passes")
     try:
-        khan_compare.read_run(fake_run("centre_U0.015_short", "short", "off", "1e+06", costs=False))
+        khan_runs.read_run(fake_run("centre_U0.015_short", "short", "off", "1e+06", costs=False))
         refused = ""
     except SystemExit as e:
         refused = str(e)
@@ -562,10 +559,10 @@ with tempfile.TemporaryDirectory() as tmp:
           "binary bed compare.py refuses a bed.csv without the stage costs, saying to post-process again: %r" % refused[-120:])
 
     # stiffness.py: a run against a stiffer one of the same case; copies of a kept run with edited values
-    khan_stiff = load_path("validation/khan/stiffness.py", "khan_stiffness")
+    import khan_stiffness as khan_stiff
     kept = os.path.join(top, "validation/khan/results/runs/bigParticle_U0.015_short_np2_E1e5")
 
-    read_rows = khan_compare.read_csv
+    read_rows = khan_runs.read_csv
 
     def write_rows(path, rows):
         with open(path, "w", newline="") as f:
@@ -589,7 +586,7 @@ with tempfile.TemporaryDirectory() as tmp:
             if r["species"] == "big":
                 r["alpha_p_plateau"] = "%.6f" % (float(r["alpha_p_plateau"]) + big_plateau_shift)
         write_rows(os.path.join(d, "results", "layers.csv"), layers)
-        return khan_compare.read_run(d)
+        return khan_runs.read_run(d)
     soft = edited_run("soft", "100000")
     rows = khan_stiff.compare_runs(soft, edited_run("near", "1000000", big_plateau_shift=0.008, dp_shift=1.0))
     check(all(ok for _, ok in rows),
@@ -635,9 +632,9 @@ with tempfile.TemporaryDirectory() as tmp:
     wrun = os.path.join(tmp, "nolog")
     os.makedirs(wrun)
     open(os.path.join(wrun, "wall_seconds.txt"), "w").write("100.5 2\n20 2\n")
-    w = summary.run_wall(wrun)
+    w = solver_log.run_wall(wrun)
     check(abs(w[0] - 120.5) < 1e-9 and abs(w[1] - 241) < 1e-9 and w[2] == [2],
-          "summary.run_wall without a log: wall_seconds.txt summed (%g s, %g core-s, ranks %s)" % w[:3])
+          "solver_log.run_wall without a log: wall_seconds.txt summed (%g s, %g core-s, ranks %s)" % w[:3])
 
     # gasBypass.py on five cells: dense with a particle centre (two, one above Courant 1), dense
     # without (bare), dilute without, and dilute with one and fast; U written as a one-line list. A
@@ -688,7 +685,7 @@ with tempfile.TemporaryDirectory() as tmp:
 # etc/python/foam_fields.py, the one reader of written fields and clouds: a vector field ascii,
 # binary and gzipped (writeCompression) alike, a uniform one, zero-size lists, and the positions of
 # a cloud ascii and binary; what does not fit refused naming the file
-foam_fields = load_path("etc/python/foam_fields.py", "foam_fields")
+import foam_fields  # noqa: E402
 with tempfile.TemporaryDirectory() as tmp:
     vec = [(0.1, -2.0, 3e-5), (4.0, 5.5, -6.25), (7.0, 8.0, 9.0)]
     head = b'FoamFile { version 2.0; format %s; arch "LSB;label=32;scalar=64"; class volVectorField; }\n'

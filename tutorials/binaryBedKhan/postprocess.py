@@ -74,32 +74,22 @@ Bad input is reported by name and time, never clipped (WARNING lines, messages.t
 - a layer that leaves the tube: a species with particles in the top cell layer (z > L - dx), or fewer
   particles than at the start, named with the first dump time it happens and whether in the window.
 """
-import argparse, glob, importlib.util, math, os, re, sys
+import argparse, math, os, re, sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-TOP = os.path.normpath(os.path.join(HERE, "..", ".."))
-
-
-def _load(path, name):
-    spec = importlib.util.spec_from_file_location(name, path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-# the dump reader, the surfaceFieldValue reader and batch means of the monodisperse bed's post-processing
-_mono = _load(os.path.join(TOP, "tutorials", "liquidFluidizedBed", "postprocess.py"), "liquid_bed_postprocess")
-read_dumps, read_fv, batch_sem, NB = _mono.read_dumps, _mono.read_fv, _mono.batch_sem, _mono.NB
-read_wall_forces, wall_force_share = _mono.read_wall_forces, _mono.wall_force_share
-ref = _load(os.path.join(TOP, "validation", "khan", "references.py"), "khan_references")
-# the project's reader of written fields (ascii or binary)
-_fields = _load(os.path.join(TOP, "etc", "python", "foam_fields.py"), "foam_fields")
-close_pairs = _load(os.path.join(TOP, "etc", "python", "particle_pairs.py"), "particle_pairs").close_pairs
-# the wall time and stage timers of a run from its solver log, as the Mueller validation reads them
-_summary = _load(os.path.join(TOP, "validation", "muller", "summary.py"), "muller_summary")
-run_wall, stage_times, NOT_COUPLING = _summary.run_wall, _summary.stage_times, _summary.NOT_COUPLING
+# the project's Python library, etc/python (COARSEDEM_DIR: this file may run from a copy of the tutorial):
+# the references of the two species; the dump, function-object and wall-force readers and batch means
+# of the monodisperse bed's post-processing; the field reader; contacts; the wall time and stage
+# timers of a run from its solver log, as the Mueller validation reads them
+sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."), "etc", "python"))
+import khan_references as ref  # noqa: E402
+import foam_fields as _fields  # noqa: E402
+from dem_series import NB, batch_sem, read_dumps, read_wall_forces, wall_force_share  # noqa: E402
+from khan_pressure import frictional_dp, sample_gaps  # noqa: E402
+from khan_layers import layer  # noqa: E402
+from particle_pairs import close_pairs  # noqa: E402
+from solver_log import NOT_COUPLING, run_wall, stage_times  # noqa: E402
 
 NX = NY = 10
 NZ = 120
@@ -144,41 +134,6 @@ def drift(x):
     x = np.asarray(x)
     h = len(x) // 2
     return float(x[h:].mean() - x[:h].mean()) if h else float("nan")
-
-
-def crossing(z, a, start, level, step):
-    """Walking from index start by step (+1 up, -1 down), the height where a falls below level
-    (linear between cell centres); the distributor (0) or the tube's top when it never does."""
-    i = start
-    while 0 <= i + step < len(a):
-        if a[i + step] < level:
-            f = (a[i] - level) / (a[i] - a[i + step]) if a[i] != a[i + step] else 0.5
-            return z[i] + f * (z[i + step] - z[i])
-        i += step
-    return 0.0 if step < 0 else ref.HEIGHT
-
-
-def layer(z, prof, batch_profiles):
-    """Interior, plateau (+- sem), bottom and top of one species from its time-mean profile."""
-    cum = np.cumsum(prof) / max(prof.sum(), 1e-300)
-    z05 = float(z[min(np.searchsorted(cum, 0.05), len(z) - 1)])
-    z95 = float(z[min(np.searchsorted(cum, 0.95), len(z) - 1)])
-    lo, hi = z05 + 0.2 * (z95 - z05), z95 - 0.2 * (z95 - z05)
-    inner = (z >= lo - 1e-12) & (z <= hi + 1e-12)
-    if not inner.any():                                   # a layer thinner than a cell: its densest cell
-        inner = prof == prof.max()
-    plateau = float(prof[inner].mean())
-    per_batch = [float(b[inner].mean()) for b in batch_profiles]
-    sem = float(np.std(per_batch, ddof=1) / math.sqrt(NB)) if len(per_batch) == NB else float("nan")
-    idx = np.nonzero(inner)[0]
-    # the edges are walked to from the interior's densest cell: an edge cell of the interior may lie
-    # below half the plateau itself (a dense layer with a long dilute tail inside the other species,
-    # whose 5-95 % span is then mostly tail), and a walk from it would extrapolate past the cell
-    densest = int(idx[np.argmax(prof[idx])])
-    top = crossing(z, prof, densest, 0.5 * plateau, +1)
-    bottom = crossing(z, prof, densest, 0.5 * plateau, -1)
-    return dict(plateau=plateau, sem=sem, inner=inner, interior_lo=float(z[idx[0]] - 0.5 * DX),
-                interior_hi=float(z[idx[-1]] + 0.5 * DX), top=top, bottom=bottom)
 
 
 def read_internal_field(path):
@@ -281,40 +236,6 @@ def pair_overlap(c):
     a, b, d = close_pairs(np.stack([c["x"], c["y"], c["z"]], axis=1), r)
     rel = (r[a] + r[b] - d) / (2 * np.minimum(r[a], r[b]))
     return (max(0.0, float(rel.max())) if len(rel) else 0.0), int((rel > 0.05).sum())
-
-
-def pressure_files(run):
-    """The pInlet files of every start in the order they were written: by start folder, then
-    surfaceFieldValue.dat before surfaceFieldValue_<t>.dat (OpenFOAM's name for a second file in
-    the same folder, a later start from the same write time), those by their time."""
-    def order(path):
-        base = os.path.basename(path)
-        m = re.match(r"surfaceFieldValue_([-+0-9.eE]+)\.dat$", base)
-        return (float(os.path.basename(os.path.dirname(path))), 1 if m else 0, float(m.group(1)) if m else 0.0)
-    files = glob.glob(os.path.join(run, "postProcessing", "pInlet", "*", "surfaceFieldValue*.dat"))
-    return sorted((f for f in files if re.match(r"surfaceFieldValue(_[-+0-9.eE]+)?\.dat$", os.path.basename(f))),
-                  key=order)
-
-
-def frictional_dp(run):
-    """(times, rho_f p_inlet - rho_f g L) from every start's pInlet files (pressure_files; a later
-    start's samples replace the earlier ones from its first sample on)."""
-    t_all, p_all = np.zeros(0), np.zeros(0)
-    for f in pressure_files(run):
-        t, p = read_fv(f)
-        if len(t):
-            keep = t_all < t[0] - 1e-12
-            t_all, p_all = np.concatenate([t_all[keep], t]), np.concatenate([p_all[keep], p])
-    return t_all, ref.RHO_F * p_all - ref.RHO_F * ref.G * ref.HEIGHT
-
-
-def sample_gaps(t):
-    """(from, to) of each step of a sample series longer than twice its median step."""
-    steps = np.diff(t)
-    if not len(steps):
-        return []
-    usual = float(np.median(steps))
-    return [(float(t[i]), float(t[i + 1])) for i in np.nonzero(steps > 2 * usual)[0]]
 
 
 def stage_costs(segs):

@@ -70,21 +70,21 @@ dumps every 0.02 s, and the pressure the fluid solver samples every 0.01 s):
 - Max overlap: d - the smallest centre distance (particle pairs) and r - the smallest wall distance,
   over the dumps in the window, in % of d.
 """
-import argparse, glob, math, os, re, sys
+import argparse, glob, math, os, sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import references as ref
+# the project's Python library, etc/python (COARSEDEM_DIR: this file may run from a copy of the tutorial)
 sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."), "etc", "python"))
+import liquid_bed_references as ref
+from liquid_bed_references import PERSIST_FROZEN
+from dem_series import NB, batch_sem, read_dumps, read_fv, read_wall_forces, wall_force_share
 from particle_pairs import close_pairs
 from foam_fields import FieldFormatError, read_internal_field
 
 A, W, HT = ref.A, 0.010, 0.120
 Z_ABOVE = 0.0305
 HEADER = "method,modelType,U,eps_sim,eps_sem,eps_drag_equilibrium,eps_richardson_zaki,dp_sim,dp_weight,dp_rel_err,wall_s"
-NB = 5
-PERSIST_FROZEN = 0.5   # share of contacts lasting 0.1 s from which a bed counts as frozen (short mode)
 
 
 def slab_volume(zc, r, a, b):
@@ -93,43 +93,6 @@ def slab_volume(zc, r, a, b):
     hi = np.clip(b - zc, -r, r)
     prim = lambda t: math.pi * (r * r * t - t ** 3 / 3)
     return prim(hi) - prim(lo)
-
-
-def read_dumps(run, demdt):
-    out = []
-    for f in glob.glob(os.path.join(run, "post", "dump*.liggghts")):
-        with open(f) as fh:
-            lines = fh.readlines()
-        step = int(lines[1])
-        cols = lines[8].split()[2:]
-        a = np.loadtxt(lines[9:])
-        if a.ndim != 2 or a.shape[0] == 0:
-            continue
-        c = {k: a[:, i] for i, k in enumerate(cols)}
-        out.append((step * demdt, c))
-    out.sort(key=lambda x: x[0])
-    return out
-
-
-def read_fv(path, column=1):
-    """(times, values of the given column) of a function object's file: a surfaceFieldValue file, or
-    forces' force.dat, whose vectors are in parentheses (v1912: total, pressure, viscous, so the viscous
-    z force is column 9). Its last line may be cut short (the run was killed while writing it): left
-    out; a bad line anywhere else is an error naming the file."""
-    t, v = [], []
-    with open(path) as f:
-        lines = [l for l in f if l.strip() and not l.startswith("#")]
-    for i, line in enumerate(lines):
-        s = line.replace("(", " ").replace(")", " ").split()
-        try:
-            ti, vi = float(s[0]), float(s[column])
-        except (IndexError, ValueError):
-            if i == len(lines) - 1:
-                break
-            raise ValueError("%s: unreadable sample line %r" % (path, line.rstrip("\n")))
-        t.append(ti)
-        v.append(vi)
-    return np.array(t), np.array(v)
 
 
 def lateral_flow(run, tstart, tend, width, U, hc, dx=0.001, height=HT):
@@ -183,14 +146,6 @@ def count_ratio(dumps, heights, width, box=0.0025):
     return float(np.mean(ratios)) if ratios else float("nan")
 
 
-def batch_sem(x):
-    x = np.asarray(x)
-    if len(x) < 2 * NB:
-        return float("nan")
-    means = [b.mean() for b in np.array_split(x, NB)]
-    return float(np.std(means, ddof=1) / math.sqrt(NB))
-
-
 def touching(c):
     """(a, b, distance, sum of the radii) of the particle pairs of a dump in contact (a cell list:
     etc/python/particle_pairs.py)."""
@@ -204,40 +159,6 @@ def max_overlap(c):
     best = float((rr - d).max()) if len(d) else -np.inf
     wall = np.concatenate([r - x, r - (W - x), r - y, r - (W - y), r - z, r - (HT - z)])
     return max(best, float(wall.max())) / (2 * r.mean())
-
-
-def read_wall_forces(run, demdt):
-    """(t, columns) of post/wallForce.txt (fix ave/time of DEM/tubeWalls.liggghts): z forces of the
-    walls wz0 (distributor) wz1 wx0 wx1 wy0 wy1, then the side walls' normal forces. A continued run
-    (binaryBedKhan -continue) keeps each earlier start's file as post/wallForce.part<N>.txt, since
-    LIGGGHTS starts the file anew: the parts in order, then wallForce.txt, each step from the last
-    file that has it (a continued start recomputes the steps after its restart)."""
-    post = os.path.join(run, "post")
-    parts = sorted(glob.glob(os.path.join(post, "wallForce.part*.txt")),
-                   key=lambda p: int(re.search(r"part(\d+)\.txt$", p).group(1)))
-    by_step = {}
-    for path in parts + [os.path.join(post, "wallForce.txt")]:
-        if not os.path.isfile(path):
-            continue
-        with open(path) as f:
-            for line in f:
-                if line.startswith("#") or not line.strip():
-                    continue
-                v = line.split()
-                if len(v) == 11:
-                    by_step[int(v[0])] = [float(x) for x in v]
-    a = np.array([by_step[k] for k in sorted(by_step)])
-    if a.ndim != 2 or len(a) == 0:
-        raise ValueError("%s: no wall-force samples" % os.path.join(post, "wallForce.txt"))
-    return a[:, 0] * demdt, a[:, 1:]
-
-
-def wall_force_share(wf, weight):
-    """The walls' share of a bed's buoyant weight over wall-force samples wf (read_wall_forces'
-    columns, the window's rows): the mean of their z forces (the first six columns) over the weight,
-    and its batch-means error."""
-    z = wf[:, :6].sum(axis=1)
-    return float(z.mean()) / weight, batch_sem(z) / weight
 
 
 def contact_pairs(c):
@@ -421,7 +342,7 @@ def main():
         def check(cond, what):
             nonlocal ok
             ok &= cond
-            print("%s %s: %s" % ("PASS" if cond else "FAIL", name, what))
+            print("%s: %s: %s" % ("PASS" if cond else "FAIL", name, what))
         check(n_last == n0, "particles kept (%d at the start, %d at the end)" % (n0, n_last))
         # within 2 % and two standard errors of the window's mean pressure drop: a method whose
         # alpha_p jumps as centres cross faces (centre, divided at dx = d) swings the pressure by

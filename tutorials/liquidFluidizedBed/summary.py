@@ -20,9 +20,10 @@ B bed heights H_c within 2 %) as MET / MISSED lines (not PASS/FAIL: the matrix i
 """
 import csv, os, shutil, sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import references as ref
-from postprocess import PERSIST_FROZEN
+# the project's Python library, etc/python (COARSEDEM_DIR: this file may run from a copy of the tutorial)
+sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."), "etc", "python"))
+import liquid_bed_references as ref  # noqa: E402
+from liquid_bed_references import PERSIST_FROZEN  # noqa: E402
 
 METHODS = ("centre", "divided", "bigParticle", "diffusion", "diffusionSources")
 MODELS = ("A", "B")

@@ -25,7 +25,7 @@ failures = 0
 
 def report(ok, text):
     global failures
-    print("%s particleDistribution/%s" % ("PASS" if ok else "FAIL", text))
+    print("%s: particleDistribution/%s" % ("PASS" if ok else "FAIL", text))
     if not ok:
         failures += 1
 

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """dragCurve.py -- terminal velocities of single spheres, Re_t from 0.1 to 1000, for every drag law,
-against the standard drag curve of a sphere (standard_drag.py: Clift, Grace & Weber 1978, Table 5.2).
+against the standard drag curve of a sphere (etc/python/standard_drag.py: Clift, Grace & Weber 1978, Table 5.2).
 
 Each case is this tutorial's column and coupling (2 mm sphere, 2 mm cells, 20 x 20 mm cross-section,
 bigParticle kernels, background fields over 5 radii, Model A with gradPForce), with the sphere's
@@ -29,7 +29,8 @@ prints PASS/FAIL lines; exit 1 on any FAIL.
 import os, re, shutil, subprocess, sys, time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+# the project's Python library, etc/python
+sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."), "etc", "python"))
 import standard_drag as sd
 
 D, RHO_F = 2e-3, 1000.0
@@ -198,15 +199,15 @@ def main(argv):
               f" {100*err_law:+6.2f} %)  drift {100*drift:+.2f} %"
               f"  warnings {nwarn}  {wall:.0f} s")
         if in_range and "vs_standard_curve" in checks:
-            print(("PASS" if ok_ref else "FAIL") + f" dragCurve/{name}/vs_standard_curve"
+            print(("PASS: " if ok_ref else "FAIL: ") + f"dragCurve/{name}/vs_standard_curve"
                   f" ({100*err:+.2f} %, tolerance {100*tol:.2f} %)")
             fails += not ok_ref
         if "vs_own_law" in checks:
-            print(("PASS" if ok_law else "FAIL") + f" dragCurve/{name}/vs_own_law ({100*err_law:+.2f} %,"
+            print(("PASS: " if ok_law else "FAIL: ") + f"dragCurve/{name}/vs_own_law ({100*err_law:+.2f} %,"
                   f" tolerance {100*LAW_TOL:.1f} %)")
             fails += not ok_law
         if "range_warning" in checks:
-            print(("PASS" if ok_warn else "FAIL") + f" dragCurve/{name}/range_warning"
+            print(("PASS: " if ok_warn else "FAIL: ") + f"dragCurve/{name}/range_warning"
                   f" ({nwarn} printed, {'in' if in_range else 'outside'} {range_text})")
             fails += not ok_warn
     write(out, results, ", ".join(sorted(run_commits)), quick)

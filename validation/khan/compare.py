@@ -37,66 +37,21 @@ contacts differ); velocities, methods, background fields and ranks may differ. O
   Richardson-Zaki line with the wall correction of the 10 mm tube (references.py 2b), which the
   simulation (no wall term in its drag) is not held to.
 """
-import csv, importlib.util, math, os, sys
+import csv, os, sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+# the project's Python library, etc/python (COARSEDEM_DIR: this file may run from a copy of its folder)
+sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."), "etc", "python"))
+import khan_references as ref  # noqa: E402
+from khan_runs import one_case, read_run  # noqa: E402
+
 HEADER = ("method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,"
           "mixing_width_mm,window_s,wall_s,coupling_share,wall_force_share")
 
 
-def _load(path, name):
-    spec = importlib.util.spec_from_file_location(name, path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-ref = _load(os.path.join(HERE, "references.py"), "khan_references")
 # Zhang et al. (2023) §V.C, the binary bed's costs in multiples of the fluid solve's CPU time: the
 # DEM about 23; the solid quantities per method (their names: PCM, big particle, diffusion based,
 # DPVM); the fluid-phase reconstruction (background fields) about 2.69
-# the columns of bed.csv (postprocess.py) this script reads beyond the results
-BED_CASE = ("background", "young_pa", "ranks", "coupling_share", "dem_per_fluid", "coupling_per_fluid", "commit")
 PAPER_COST = {"DEM": 23.0, "centre": 3.85, "bigParticle": 4.37, "diffusion": 4.82, "divided": 4.91, "background": 2.69}
-
-
-def read_csv(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def read_run(run):
-    res = os.path.join(run, "results")
-    for f in ("bed.csv", "layers.csv", "profiles.csv"):
-        if not os.path.isfile(os.path.join(res, f)):
-            raise SystemExit("compare.py: %s has no results/%s (run postprocess.py first, or Allrun -post)" % (run, f))
-    bed = read_csv(os.path.join(res, "bed.csv"))[0]
-    missing = [k for k in BED_CASE if k not in bed]
-    if missing:
-        raise SystemExit("compare.py: %s/results/bed.csv has no %s: it was post-processed by an older postprocess.py; "
-                         "run Allrun ... -post again" % (run, ", ".join(missing)))
-    layers = {r["species"]: r for r in read_csv(os.path.join(res, "layers.csv"))}
-    prof = read_csv(os.path.join(res, "profiles.csv"))
-    axis = read_csv(os.path.join(res, "axis_end.csv")) if os.path.isfile(os.path.join(res, "axis_end.csv")) else []
-    msgs = os.path.join(res, "messages.txt")
-    warnings = [l.rstrip("\n") for l in open(msgs)] if os.path.isfile(msgs) else []
-    name = os.path.basename(os.path.normpath(run))
-    method = bed["method"] + ("+background" if bed["background"] == "on" else "")
-    return dict(name=name, method=method, bed=bed, layers=layers, prof=prof, axis=axis, warnings=warnings,
-                share=float(bed["coupling_share"]), dem_per_fluid=float(bed["dem_per_fluid"]),
-                coupling_per_fluid=float(bed["coupling_per_fluid"]), case=(bed["mode"], "%g" % float(bed["young_pa"])))
-
-
-def one_case(runs):
-    """The runs' (mode, Young's modulus), the same for all, or SystemExit naming the runs that differ."""
-    cases = {}
-    for r in runs:
-        cases.setdefault(r["case"], []).append(r["name"])
-    if len(cases) > 1:
-        raise SystemExit("compare.py: the runs mix modes or contact stiffnesses, whose windows and contacts differ; "
-                         "compare one at a time:\n" + "\n".join("    mode %s, E = %s Pa: %s" % (m, e, ", ".join(n))
-                                                                 for (m, e), n in sorted(cases.items())))
-    return next(iter(cases))
 
 
 def summary_rows(runs):

@@ -29,8 +29,9 @@ write time, a sample without a column the store holds, an unreadable store.
 """
 import gzip, os, shutil, subprocess, sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import profiles
+# the project's Python library, etc/python (COARSEDEM_DIR: this file may run from a copy of its folder)
+sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."), "etc", "python"))
+import muller_profiles as profiles  # noqa: E402
 
 # the columns stored per function: those profiles.py's variants read, and the position
 COLUMNS = {

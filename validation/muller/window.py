@@ -35,8 +35,10 @@ or with no whole window after it, an inlet velocity without MR data.
 """
 import contextlib, csv, glob, io, math, os, re, sys, tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import compare, profiles
+# the project's Python library, etc/python (COARSEDEM_DIR: this file may run from a copy of its folder)
+sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."), "etc", "python"))
+import muller_compare as compare  # noqa: E402
+import muller_profiles as profiles  # noqa: E402
 
 DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
 BATCHES, MIN_BATCH = 10, 5          # profiles.py's defaults

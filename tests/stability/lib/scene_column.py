@@ -11,7 +11,6 @@ Courant number range (--co-range: the run must reach a max Co in [lo, hi]).
 """
 import argparse, math, os, re, sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stablib
 
 

@@ -14,23 +14,9 @@ its largest Courant number stays below 0.5, its particles stay below 5 x the iso
 and (with a reference) its mean displacement is within 10 % of the reference's. The explicit run is
 measured, not asserted.
 """
-import argparse, math, os, re, sys
+import argparse, math, sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stablib
-import scene_settle
-
-
-def progress(case):
-    steps, co = 0, []
-    with open(os.path.join(case, "log.coarseDemFoam"), errors="replace") as f:
-        for line in f:
-            if line.startswith("Time = "):
-                steps += 1
-            m = re.match(r"Courant Number mean: (\S+) max: (\S+)", line)
-            if m:
-                co.append(float(m.group(2)))
-    return steps, co
 
 
 def mean_z(rows):
@@ -39,7 +25,7 @@ def mean_z(rows):
 
 def describe(case):
     p = stablib.params(case)
-    steps, co = progress(case)
+    steps, co = stablib.progress(case)
     n_total = int(round(float(p["END_TIME"]) / (int(p["COUPLING_INTERVAL"]) * float(p["DEM_TIMESTEP"]))))
     d = stablib.dumps(case)
     vmax = max((math.sqrt(r[3] ** 2 + r[4] ** 2 + r[5] ** 2) for rows in d.values() for r in rows.values()),
@@ -59,7 +45,7 @@ def main():
     a = ap.parse_args()
     im, ex = describe(a.implicit), describe(a.explicit)
     p = im["p"]
-    _, vt, tau = scene_settle.ode(p, [0.0])
+    _, vt, tau = stablib.ode(p, [0.0])
     dt = int(p["COUPLING_INTERVAL"]) * float(p["DEM_TIMESTEP"])
     ok, summary, m = stablib.check_run(a.implicit, float(p.get("ALPHA_MIN", 0.3)), int(p["N_PARTICLES"]))
     parts = ["dt_CFD %.3g s = %.2f tau_p (isolated, v_t %.3g m/s)" % (dt, dt / tau, abs(vt)),

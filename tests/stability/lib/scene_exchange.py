@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """scene_exchange.py -- momentum exchanged between the phases over time, not only at one instant.
 
-    scene_exchange.py <explicit case> <implicit case> <scene>
+    scene_exchange.py <explicit case> <implicit case> <scene> [--refined <implicit case, CFD step / 4>]
 
 The balance line of every coupling checks that the fluid's source equals minus the particles' force at
 that instant. This scene checks the impulses over the steps: the forces of a coupling act on the fluid
@@ -14,14 +14,18 @@ against the fluid's source at its velocity after the step, times the step).
     first (which acts on the particles only).
   implicit case (the defaults): the particles' drag follows their velocity within the step and the
     fluid's follows its new velocity, so the impulses differ by what the velocities changed in a step:
-    measured and reported, asserted only to be finite and compared every step.
+    measured and reported, asserted to be finite and compared every step, and, given the same case at
+    a quarter of the CFD step (--refined), to shrink with the step: the net imbalance over the run,
+    relative to the momentum exchanged, at most half the default step's (first order would give a
+    quarter). The largest single coupling's imbalance is reported, not asserted: a ratio to that
+    coupling's own exchange, it is largest where the forces nearly cancel, and it shrank only from
+    0.54 to 0.43 at a quarter of the step (at f16b5e5) while the net fell from 5.4e-4 to 3.4e-5.
 Both runs must also pass the common checks (stablib.check_run).
 """
-import math, os, sys
+import math, sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stablib
-from scene_drag import progress
+from stablib import progress
 
 
 def measure(case, label, problems):
@@ -49,12 +53,22 @@ def measure(case, label, problems):
 
 def main():
     explicit, implicit, scene = sys.argv[1:4]
+    refined = sys.argv[5] if len(sys.argv) > 5 and sys.argv[4] == "--refined" else None
     problems = []
     ee, te = measure(explicit, "explicit", problems)
     ei, ti = measure(implicit, "implicit", problems)
     if ee is not None and not ee["max"] <= 1e-12:
         problems.append("explicit coupling: impulses differ by %.2e x exchange > 1e-12" % ee["max"])
     line = "%s: %s; %s" % (scene, te, ti)
+    if refined:
+        er, tr = measure(refined, "implicit, CFD step / 4", problems)
+        line += "; " + tr
+        if ei is not None and er is not None:
+            rel = lambda e: math.sqrt(sum(v * v for v in e["net"])) / e["gross"] if e["gross"] > 0 else float("nan")
+            ratio = rel(er) / rel(ei) if rel(ei) > 0 else float("nan")
+            line += "; the net imbalance x %.2f at a quarter of the step" % ratio
+            if not ratio <= 0.5:
+                problems.append("the implicit net imbalance does not shrink with the CFD step (x %.2f, at most 0.5)" % ratio)
     if problems:
         print("FAIL: " + line + "; " + "; ".join(problems))
         return 1

@@ -24,7 +24,6 @@
 """
 import math, os, sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stablib
 
 

@@ -12,7 +12,6 @@ after a restart), and both runs pass the common checks.
 """
 import argparse, os, sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stablib
 
 

@@ -14,19 +14,10 @@ With --stiff: the scene is "particle response time far below the CFD step": repo
 the --explicit-case) whether the particle stayed, blew up or was lost, and its final velocity against
 the terminal velocity; PASS only if the case stays within tol of the ODE (i.e. stable and accurate).
 """
-import argparse, os, sys
+import argparse, sys
 
-here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, here)
-sys.path.insert(0, os.path.join(here, "..", "..", "..", "tutorials", "settlingTest"))
-import stablib
-import settling_ode
-
-
-def ode(p, times):
-    """The ODE's velocities at the times, terminal velocity and response time for the scene's particle."""
-    return settling_ode.settling(float(p["D_MM"]) * 1e-3, float(p["RHO_P"]), float(p["RHO_F"]),
-                                 float(p["NU_F"]), times)
+import stablib  # this folder's (a script's own folder is on its path)
+from stablib import ode
 
 
 def history(case):

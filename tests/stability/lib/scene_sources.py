@@ -12,9 +12,8 @@ a particle's force is no longer concentrated in its host cell (0.53 measured for
 column, whose bed of three layers already spreads the unsmoothed source). Both runs must also pass
 the common checks.
 """
-import math, os, sys
+import math, sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stablib
 
 

@@ -13,6 +13,27 @@ import glob, math, os, re, sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "etc", "python"))
 import foam_fields  # noqa: E402  the project's reader of written fields
+import settling_ode  # noqa: E402  the drag ODE of a single sphere
+
+
+def ode(p, times):
+    """The ODE's velocities at the times, terminal velocity and response time for a scene's particle
+    (mkcase parameters D_MM, RHO_P, RHO_F, NU_F)."""
+    return settling_ode.settling(float(p["D_MM"]) * 1e-3, float(p["RHO_P"]), float(p["RHO_F"]),
+                                 float(p["NU_F"]), times)
+
+
+def progress(case):
+    """(CFD steps, each step's largest Courant number) of a case's solver log."""
+    steps, co = 0, []
+    with open(os.path.join(case, "log.coarseDemFoam"), errors="replace") as f:
+        for line in f:
+            if line.startswith("Time = "):
+                steps += 1
+            m = re.match(r"Courant Number mean: (\S+) max: (\S+)", line)
+            if m:
+                co.append(float(m.group(2)))
+    return steps, co
 
 NUM = r"([-+]?(?:\d+\.?\d*(?:[eE][-+]?\d+)?|nan|inf|-nan|-inf))"
 COUPLING = re.compile(
