@@ -1,5 +1,6 @@
 #include "coarseDemCoupling.H"
 #include "setupAdvice.H"
+#include "couplingEntries.H"
 #include "particleCloud.H"
 #include "demTimeStepCheck.H"
 #include "demNeighbourCheck.H"
@@ -8,8 +9,6 @@
 #include "noAliasFvc.H"
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
-#include "OStringStream.H"
-#include "HashTable.H"
 
 #include <cmath>
 
@@ -21,106 +20,6 @@ static IOobject couplingDictIO(const fvMesh& mesh)
     return IOobject("couplingProperties", mesh.time().constant(), mesh, IOobject::MUST_READ, IOobject::NO_WRITE);
 }
 
-// In a parallel run the master reads couplingProperties and streams it to the other ranks, whose copy
-// is then named after the stream ("IOstream"): every error raised on those ranks would name no file.
-// Names the dictionary, its entries (a bad value's error names its entry) and its sub-dictionaries
-// after the master's file on every rank, as OpenFOAM names them when it reads the file.
-// The entries are found by keyword, not with the dictionary's non-const iterator: in OpenFOAM v1912
-// an entry replaced by a later one of the same keyword (a key given twice) leaves a link to the deleted
-// entry that only that iterator follows (DLListBase::replace), and the renaming crashed there.
-static void nameAfterFile(dictionary& dict, const fileName& name)
-{
-    dict.name() = name;
-    for (const word& keyword : dict.toc())
-    {
-        entry* e = dict.findEntry(keyword, keyType::LITERAL);
-        if (!e) continue;
-        e->name() = name + '.' + keyword;
-        if (e->isDict()) nameAfterFile(e->dict(), e->name());
-    }
-}
-
-// Every entry of couplingProperties, checked before any model reads it: an entry nothing reads (a
-// misspelt name, or a model's entry written at the top level instead of in its <model>Props) would be
-// ignored and the run would go on with the defaults. Sub-dictionaries must be the <model>Props of a
-// model (or openSystem); plain entries the solver's own. All unknown entries are named in one message,
-// each misplaced one with the dictionary it belongs in. Returns its argument, so that the check (and
-// the naming after the file) runs before the first model reads its dictionary.
-static const dictionary& checkCouplingEntries(IOdictionary& io)
-{
-    dictionary& file = io;          // as a dictionary: IOdictionary's own name() is the object's
-    fileName path = file.name();    // the master's: the file it read
-    Pstream::scatter(path);
-    nameAfterFile(file, path);
-    // read through a const view: the non-const iterator would follow the link nameAfterFile avoids
-    const dictionary& dict = file;
-    wordHashSet dicts{"backgroundFieldsProps", "diffusionProps", "sizeAwareDiffusionProps", "openSystem"};
-    for (int i = 0; i < cdc_method_count(); ++i) dicts.insert(word(cdc_method_name(i)) + "Props");
-    for (const word& f : forceModel::dictionaryConstructorTablePtr_->sortedToc()) dicts.insert(f + "Props");
-    // the plain entries read from the top level (doc/couplingProperties.md)
-    const wordHashSet entries
-    {
-        "modelType", "couplingInterval", "demScript", "implicitDrag", "implicitParticleDrag",
-        "voidFractionModel", "mirrorPatches", "alphaMin", "alphaRelaxationTime", "smoothingModel",
-        "backgroundFields", "forceModels", "coarseGrainingFactor", "demRestart", "demFreshStart",
-        "demCouplingFix", "demTimeStepWarnFraction", "demTimeStepMaxFraction", "demTimeStepForce",
-        "demMaxImpactVelocity", "allowParticleLoss", "particleFieldsInterval", "solidVelocityField",
-        "binnedParticleFields", "binnedSpeciesFields", "writeExchangeFields", "writeParticleCloud"
-    };
-    // entries of a model's dictionary, where they belong when written at the top level
-    const HashTable<word> belongs
-    {
-        {"expansionFactor", "bigParticleProps or backgroundFieldsProps"},
-        {"wallMirror", "bigParticleProps, twoGridProps, gaussianProps or backgroundFieldsProps"},
-        {"searchFactor", "twoGridProps"},
-        {"bandwidth", "diffusionProps or gaussianProps"},
-        {"smoothExchangeFields", "diffusionProps"},
-        {"nSteps", "diffusionProps or sizeAwareDiffusionProps"},
-        {"tolerance", "diffusionProps or sizeAwareDiffusionProps"},
-        {"DRule", "diffusionProps"},
-        {"particleDiameter", "diffusionProps"},
-        {"bandwidthOverD", "sizeAwareDiffusionProps"},
-        {"classRatio", "sizeAwareDiffusionProps"},
-        {"reactionKernel", "backgroundFieldsProps"},
-        {"reynoldsNumber", "DiFeliceDragProps"},
-        {"Cvm", "virtualMassForceProps"}
-    };
-    OStringStream unknown;
-    label nUnknown = 0;
-    for (const entry& e : dict)
-    {
-        const word& k = e.keyword();
-        if (k == "FoamFile") continue;
-        const bool ok = e.isDict() ? dicts.found(k) : entries.found(k);
-        if (ok) continue;
-        ++nUnknown;
-        unknown << nl << "    " << (e.isDict() ? "dictionary " : "entry ") << k;
-        if (!e.isDict() && belongs.found(k))
-        {
-            unknown << ": an entry of " << belongs[k] << ", not of the top level";
-        }
-        else if (e.isDict())
-        {
-            unknown << ": no model of that name (a misspelt model name?)";
-        }
-        else
-        {
-            unknown << ": not an entry of couplingProperties (misspelt?)";
-        }
-    }
-    if (nUnknown)
-    {
-        string dNames, eNames;
-        for (const word& w : dicts.sortedToc()) dNames += (dNames.empty() ? "" : ", ") + w;
-        for (const word& w : entries.sortedToc()) eNames += (eNames.empty() ? "" : ", ") + w;
-        FatalIOErrorInFunction(dict)
-            << nUnknown << " unknown entr" << (nUnknown > 1 ? "ies" : "y") << " in " << dict.name()
-            << " (each would be ignored):" << unknown.str().c_str() << nl
-            << "    entries read: " << eNames.c_str() << nl
-            << "    dictionaries read: " << dNames.c_str() << exit(FatalIOError);
-    }
-    return dict;
-}
 
 coarseDemCoupling::coarseDemCoupling
 (
@@ -131,11 +30,7 @@ coarseDemCoupling::coarseDemCoupling
     dict_(couplingDictIO(mesh)),
     modelB_(false),
     couplingInterval_(checkCouplingEntries(dict_).get<label>("couplingInterval")),
-    implicitDrag_(dict_.lookupOrDefault<Switch>("implicitDrag", true)),
-    implicitParticleDrag_(dict_.lookupOrDefault<Switch>("implicitParticleDrag", true)),
-    demRestart_(dict_.lookupOrDefault<Switch>("demRestart", true)),
-    writeParticleCloud_(dict_.lookupOrDefault<Switch>("writeParticleCloud", true)),
-    allowParticleLoss_(dict_.lookupOrDefault<Switch>("allowParticleLoss", false)),
+    switches_(dict_),
     cgFactor_(dict_.lookupOrDefault<scalar>("coarseGrainingFactor", 1)),
     alphaRelaxationTime_(dict_.lookupOrDefault<scalar>("alphaRelaxationTime", 0)),
     fluid_{rho.value(), nu.value(), g.value()},
@@ -149,13 +44,7 @@ coarseDemCoupling::coarseDemCoupling
     halo_(mesh),
     solidVolumeParticles_(0), solidVolumeCells_(0), momentumImbalance_(0), forceScale_(0),
     nParticles_(0),
-    inventory_(mesh, dict_, allowParticleLoss_),
-    particleDragRatio_(0),
-    nParticlesBeyond_(0),
-    fluidDragRatio_(0),
-    nCellsBeyond_(0),
-    warnedParticleSide_(false),
-    warnedFluidSide_(false),
+    inventory_(mesh, dict_, switches_.allowParticleLoss),
     keepRestartForces_(false),
     alphaP
     (
@@ -210,7 +99,7 @@ void coarseDemCoupling::evolveDem()
 {
     timers_.start(stageTimers::dem);
     dem_->run(couplingInterval_);
-    segmentSeconds_ = couplingInterval_*dem_->timestep();
+    exchange_.setSegment(couplingInterval_*dem_->timestep());
     timers_.stop();
 }
 
@@ -243,7 +132,7 @@ void coarseDemCoupling::couple
     pushForces();                              // to the DEM for its next segment
 
     timers_.start(stageTimers::sources);
-    exchangeDt_ = mesh_.time().deltaTValue();
+    exchange_.setCfdStep(mesh_.time().deltaTValue());
     fluidSources(U);                           // Ksl, KslUs, fFluid with the same kernels
     Ksl.correctBoundaryConditions();
     KslUs.correctBoundaryConditions();
@@ -374,14 +263,14 @@ void coarseDemCoupling::pushForces()
     const label n = particles_.size();
     timers_.start(stageTimers::forces);
     force_.resize(3*n);
-    dragK_.resize(implicitParticleDrag_ ? n : 0);
-    dragUf_.resize(implicitParticleDrag_ ? 3*n : 0);
+    dragK_.resize(switches_.implicitParticleDrag ? n : 0);
+    dragUf_.resize(switches_.implicitParticleDrag ? 3*n : 0);
     for (label i = 0; i < n; ++i)
     {
         const vector f = particleForce(i);
-        const vector fDem = implicitParticleDrag_ ? fOther_[i] : f;
+        const vector fDem = switches_.implicitParticleDrag ? fOther_[i] : f;
         for (direction d = 0; d < 3; ++d) force_[3*i + d] = fDem[d];
-        if (implicitParticleDrag_)
+        if (switches_.implicitParticleDrag)
         {
             dragK_[i] = K_[i];
             for (direction d = 0; d < 3; ++d) dragUf_[3*i + d] = state_.Uf[i][d];
@@ -392,13 +281,13 @@ void coarseDemCoupling::pushForces()
     if (keepRestartForces_)
     {
         keepRestartForces_ = false;   // the balance line of this step describes forces not applied
-        exchangePending_ = false;
+        exchange_.setPending(false);
     }
     else
     {
         dem_->push(force_);
-        if (implicitParticleDrag_) dem_->pushDrag(dragK_, dragUf_);
-        exchangePending_ = nCouplings_ > 1;
+        if (switches_.implicitParticleDrag) dem_->pushDrag(dragK_, dragUf_);
+        exchange_.setPending(nCouplings_ > 1);
     }
     timers_.stop();
 }
@@ -441,13 +330,13 @@ void coarseDemCoupling::write()
 {
     if (!mesh_.time().writeTime()) return;
     inventory_.write(particles_);
-    if (demRestart_)
+    if (switches_.demRestart)
     {
         const fileName dir = mesh_.time().globalPath()/mesh_.time().timeName();
         if (Pstream::master()) mkDir(dir);
         dem_->writeRestart(dir/"dem.restart");
     }
-    if (writeParticleCloud_)
+    if (switches_.writeParticleCloud)
     {
         // the particles of this step's coupling, with the force it gave each (drag and the others)
         const label n = particles_.size();

@@ -116,7 +116,7 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
 {
     const label n = particles_.size();
     const bool smooth = voidFraction_.smoothsExchangeFields();
-    const bool implicit = implicitDrag_ && !smooth;
+    const bool implicit = switches_.implicitDrag && !smooth;
     const cdc_kernels* k = reactionKernels();
     withGhosts(K_.cdata(), 1, exchangeK_);
     withGhosts(reinterpret_cast<const double*>(state_.v), 3, exchangeV_);
@@ -146,7 +146,7 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
     if (smooth)
     {
         // diffusion in flux form keeps sum(f V), so the balance holds as spread
-        if (!implicitDrag_)
+        if (!switches_.implicitDrag)
         {
             voidFraction_.smoothLikeAlpha(f, 3);
             return;

@@ -203,8 +203,8 @@ void coarseDemCoupling::printSummary(const wordList& names) const
              : "void-fraction kernels"
            )
         << (reactionViaBackground_ && backgroundKernels_ ? ", the fluid's reaction through the background kernels" : "")
-        << ", drag on the fluid " << (implicitDrag_ ? "implicit" : "explicit") << ", on the particles "
-        << (implicitParticleDrag_ ? "every DEM step" : "held for the CFD step") << ", forces " << names
+        << ", drag on the fluid " << (switches_.implicitDrag ? "implicit" : "explicit") << ", on the particles "
+        << (switches_.implicitParticleDrag ? "every DEM step" : "held for the CFD step") << ", forces " << names
         << ", DEM step " << dem_->timestep() << " s x " << couplingInterval_;
     if (cgFactor_ != 1)
     {
