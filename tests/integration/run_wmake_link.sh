@@ -12,28 +12,12 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 project="$(cd "$here/../.." && pwd)"
 . "$here/result.sh"
 
-# shellcheck source=../../etc/wmakeEnv
-if ! . "$project/etc/wmakeEnv"; then
-    result fail "etc/wmakeEnv: no OpenFOAM build environment (run ./Allwmake)"
-    finish
-fi
+. "$here/wmake_app.sh"
+work="$project/platforms/tests/wmake_link"
+wmake_app "$here/wmake_link/coarseDemLinkCheck" "$work" "OpenFOAM + LIGGGHTS + core"
 for f in "$COARSEDEM_LIGGGHTS_DIR/lib/libliggghts.so" "$project/src/core/build/libcoarsedem.a"; do
     [ -f "$f" ] || { result fail "missing $f (run ./Allwmake)"; finish; }
 done
-
-work="$project/platforms/tests/wmake_link"
-rm -rf "$work"
-mkdir -p "$work/bin"
-cp -r "$here/wmake_link/coarseDemLinkCheck" "$work/"
-export FOAM_USER_APPBIN="$work/bin"    # keep the check out of the project's bin/
-
-if (cd "$work/coarseDemLinkCheck" && wmake) > "$work/log.wmake" 2>&1; then
-    result ok "coarseDemLinkCheck compiled and linked with wmake (OpenFOAM + LIGGGHTS + core)"
-else
-    tail -n 30 "$work/log.wmake"
-    result fail "wmake of coarseDemLinkCheck failed (see $work/log.wmake)"
-    finish
-fi
 
 cd "$work" || exit 1
 if "$work/bin/coarseDemLinkCheck" -help > log.help 2>&1 && grep -q 'Usage: coarseDemLinkCheck' log.help; then
