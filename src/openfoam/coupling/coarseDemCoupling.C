@@ -145,8 +145,10 @@ void coarseDemCoupling::couple
     if (nCouplings_ == 1) adviseOnSetup(dict_, voidFraction_, mesh_.V(), particles_.radius);
     if (nCouplings_ == 1 || mesh_.time().writeTime())
     {
-        checkParcelFill();
-        checkDragCoverage();
+        // a parcel filling a cell beyond the packing limit; dense cells the drag misses
+        const word time = mesh_.time().timeName();
+        coverage_.checkParcelFill(voidFraction_, volume_, particles_, mesh_.V(), cgFactor_, dict_.name(), time);
+        coverage_.checkDragCoverage(voidFraction_, reactionKernels(), alphaP, dict_.name(), time);
     }
 }
 

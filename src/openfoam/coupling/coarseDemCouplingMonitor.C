@@ -12,7 +12,6 @@
 namespace Foam
 {
 
-
 Foam::vector coarseDemCoupling::fluidMomentumSource(const volVectorField& U) const
 {
     const scalarField& V = mesh_.V();
@@ -32,7 +31,9 @@ void coarseDemCoupling::compareExchangeInTime(const volVectorField& U, bool segm
         exchange_.skip();
         return;
     }
-    exchange_.compare(returnReduce(dem_->couplingImpulse(), sumOp<vector>()), fluidMomentumSource(U));
+    // forceScale_: sum |f| of the last coupling, whose forces the segment used (recordBalances
+    // replaces it later in this step)
+    exchange_.compare(returnReduce(dem_->couplingImpulse(), sumOp<vector>()), fluidMomentumSource(U), forceScale_);
 }
 
 // Balances for the Coupling line: solid volume in cells vs particles; the momentum the fluid gets (at
@@ -69,7 +70,7 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
     reduce(fParticles, sumOp<vector>());
     reduce(nonReacting, sumOp<vector>());
     reduce(forceScale_, sumOp<scalar>());
-    exchange_.setForces(nonReacting, forceScale_);
+    exchange_.setNonReacting(nonReacting);
     momentumImbalance_ = mag(fluidTotal + fParticles);
     timers_.stop();
 }
@@ -91,17 +92,6 @@ void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
     scalarField KslExplicit(mesh_.nCells(), 0);
     spread(Kr.cdata(), 1, KslExplicit.data());
     explicitRange_.checkFluid(dt*KslExplicit/alpha.primitiveField(), dict_.name(), mesh_.time().timeName());
-}
-
-void coarseDemCoupling::checkParcelFill()
-{
-    coverage_.checkParcelFill(voidFraction_, volume_, particles_, mesh_.V(), cgFactor_, dict_.name(),
-                              mesh_.time().timeName());
-}
-
-void coarseDemCoupling::checkDragCoverage()
-{
-    coverage_.checkDragCoverage(voidFraction_, reactionKernels(), alphaP, dict_.name(), mesh_.time().timeName());
 }
 
 void coarseDemCoupling::report(Ostream& os) const
