@@ -50,16 +50,63 @@ def read_fv(path, column=1):
     return np.array(t), np.array(v)
 
 
-def batch_sem(x):
+def function_files(run, name):
+    """The files of a surfaceFieldValue function object NAME from every start of a run, in the order
+    they were written: by start folder, then surfaceFieldValue.dat before surfaceFieldValue_<t>.dat
+    (OpenFOAM's name for a second file in the same folder, a later start from the same write time),
+    those by their time."""
+    def order(path):
+        base = os.path.basename(path)
+        m = re.match(r"surfaceFieldValue_([-+0-9.eE]+)\.dat$", base)
+        return (float(os.path.basename(os.path.dirname(path))), 1 if m else 0, float(m.group(1)) if m else 0.0)
+    files = glob.glob(os.path.join(run, "postProcessing", name, "*", "surfaceFieldValue*.dat"))
+    return sorted((f for f in files if re.match(r"surfaceFieldValue(_[-+0-9.eE]+)?\.dat$", os.path.basename(f))),
+                  key=order)
+
+
+def function_series(run, name):
+    """(times, values) of a surfaceFieldValue function object NAME over every start of a run
+    (function_files): a later start's samples replace the earlier ones from its first sample on."""
+    t_all, v_all = np.zeros(0), np.zeros(0)
+    for f in function_files(run, name):
+        t, v = read_fv(f)
+        if len(t):
+            keep = t_all < t[0] - 1e-12
+            t_all, v_all = np.concatenate([t_all[keep], t]), np.concatenate([v_all[keep], v])
+    return t_all, v_all
+
+
+def batch_sem(x, nb=NB):
+    """The batch-means standard error of the mean of series x, in nb batches (nan below 2 nb samples)."""
     x = np.asarray(x)
-    if len(x) < 2 * NB:
+    if len(x) < 2 * nb:
         return float("nan")
-    means = [b.mean() for b in np.array_split(x, NB)]
-    return float(np.std(means, ddof=1) / math.sqrt(NB))
+    means = [b.mean() for b in np.array_split(x, nb)]
+    return float(np.std(means, ddof=1) / math.sqrt(nb))
 
 
-def read_wall_forces(run, demdt):
-    """(t, columns) of post/wallForce.txt (fix ave/time of DEM/tubeWalls.liggghts): z forces of the
+def dem_time_anchor(run):
+    """(DEM step, time) of the run's latest write that holds a DEM restart (<time>/dem.restart.step,
+    in the case or in processor0): the DEM's step count at a time, for series that record steps,
+    where the steps do not start at time 0 (a run from a state made with another DEM step).
+    (0, 0.0) without such a write."""
+    best = (0, 0.0)
+    for f in glob.glob(os.path.join(run, "*", "dem.restart.step")) + \
+            glob.glob(os.path.join(run, "processor0", "*", "dem.restart.step")):
+        try:
+            t = float(os.path.basename(os.path.dirname(f)))
+            with open(f) as fh:
+                step = int(fh.read().split()[0])
+        except (ValueError, IndexError):
+            continue
+        if t >= best[1]:
+            best = (step, t)
+    return best
+
+
+def read_wall_forces(run, demdt, anchor=(0, 0.0)):
+    """(t, columns) of post/wallForce.txt (fix ave/time of DEM/tubeWalls.liggghts): the time of a DEM
+    step from anchor (a DEM step and its time: dem_time_anchor) and the step demdt; z forces of the
     walls wz0 (distributor) wz1 wx0 wx1 wy0 wy1, then the side walls' normal forces. A continued run
     (binaryBedKhan -continue) keeps each earlier start's file as post/wallForce.part<N>.txt, since
     LIGGGHTS starts the file anew: the parts in order, then wallForce.txt, each step from the last
@@ -81,7 +128,7 @@ def read_wall_forces(run, demdt):
     a = np.array([by_step[k] for k in sorted(by_step)])
     if a.ndim != 2 or len(a) == 0:
         raise ValueError("%s: no wall-force samples" % os.path.join(post, "wallForce.txt"))
-    return a[:, 0] * demdt, a[:, 1:]
+    return anchor[1] + (a[:, 0] - anchor[0]) * demdt, a[:, 1:]
 
 
 def wall_force_share(wf, weight):
