@@ -104,18 +104,17 @@ def dem_time_anchor(run):
     return best
 
 
-def read_wall_forces(run, demdt, anchor=(0, 0.0)):
-    """(t, columns) of post/wallForce.txt (fix ave/time of DEM/tubeWalls.liggghts): the time of a DEM
-    step from anchor (a DEM step and its time: dem_time_anchor) and the step demdt; z forces of the
-    walls wz0 (distributor) wz1 wx0 wx1 wy0 wy1, then the side walls' normal forces. A continued run
-    (binaryBedKhan -continue) keeps each earlier start's file as post/wallForce.part<N>.txt, since
-    LIGGGHTS starts the file anew: the parts in order, then wallForce.txt, each step from the last
-    file that has it (a continued start recomputes the steps after its restart)."""
+def read_post_series(run, name, ncols, demdt, anchor=(0, 0.0)):
+    """(t, columns) of a DEM fix ave/time file post/NAME.txt of NCOLS values after the step. A continued
+    run keeps each earlier start's file as post/NAME.part<N>.txt (etc/RunFunctions keepPostParts),
+    since LIGGGHTS starts the file anew: the parts in order, then NAME.txt, each step from the last
+    file that has it (a continued start recomputes the steps after its restart). The time of a step
+    from anchor (a DEM step and its time: dem_time_anchor) and the DEM step demdt."""
     post = os.path.join(run, "post")
-    parts = sorted(glob.glob(os.path.join(post, "wallForce.part*.txt")),
+    parts = sorted(glob.glob(os.path.join(post, name + ".part*.txt")),
                    key=lambda p: int(re.search(r"part(\d+)\.txt$", p).group(1)))
     by_step = {}
-    for path in parts + [os.path.join(post, "wallForce.txt")]:
+    for path in parts + [os.path.join(post, name + ".txt")]:
         if not os.path.isfile(path):
             continue
         with open(path) as f:
@@ -123,12 +122,18 @@ def read_wall_forces(run, demdt, anchor=(0, 0.0)):
                 if line.startswith("#") or not line.strip():
                     continue
                 v = line.split()
-                if len(v) == 11:
+                if len(v) == ncols + 1:
                     by_step[int(v[0])] = [float(x) for x in v]
     a = np.array([by_step[k] for k in sorted(by_step)])
     if a.ndim != 2 or len(a) == 0:
-        raise ValueError("%s: no wall-force samples" % os.path.join(post, "wallForce.txt"))
+        raise ValueError("%s: no samples" % os.path.join(post, name + ".txt"))
     return anchor[1] + (a[:, 0] - anchor[0]) * demdt, a[:, 1:]
+
+
+def read_wall_forces(run, demdt, anchor=(0, 0.0)):
+    """(t, columns) of post/wallForce.txt (fix ave/time of DEM/tubeWalls.liggghts; read_post_series):
+    z forces of the walls wz0 (distributor) wz1 wx0 wx1 wy0 wy1, then the side walls' normal forces."""
+    return read_post_series(run, "wallForce", 10, demdt, anchor)
 
 
 def wall_force_share(wf, weight):

@@ -13,10 +13,11 @@ integral over int (1 - eps) |v| dx (the net flux as a fraction of the gross: 0 i
 upward and downward parts, and by what factor the upward part would have to change to balance the
 downward one (the central upflow peak that balances).
 
-The MR data hold v_z at 15 mm and the gas fraction at 16.4 mm (0.9 m/s); the gas fraction varies
-little over those 1.4 mm (in every run here under 0.01 on average). Three readings of eps for the
-data: the MR gas fraction at 16.4 mm; a uniform eps (the MR's mean: weighting by the velocity alone);
-and each run's own time-averaged gas fraction at 15 mm. For each run given, its own balance at the
+The MR data (0.9 m/s) hold v_z at 15, 25 and 35 mm and the gas fraction at 16.4 and 31.2 mm; each
+velocity profile is read with the gas fraction nearest in height (16.4 mm for 15 mm: the gas fraction
+of the runs changes little over those 1.4 mm; 31.2 mm for 25 and 35 mm, a rougher pairing), and
+with a uniform gas fraction (the MR's mean: weighting by the velocity alone); the 15 mm profile also
+with each run's own time-averaged gas fraction at 15 mm. For each run given, its own balance at the
 six heights (depth-averaged, binned: the headline profiles).
 Writes the CSV (default validation/muller/results/fluxBalance.csv) and prints a table.
 """
@@ -29,6 +30,8 @@ import numpy as np
 
 WIDTH = 0.044
 HEIGHTS = ("15", "16.4", "20", "25", "31.2", "35")
+# the MR velocity profiles (0.9 m/s) and the MR gas fraction nearest in height
+MR_PAIRS = (("15", "16.4"), ("25", "31.2"), ("35", "31.2"))
 
 
 def read_xy(path):
@@ -62,24 +65,30 @@ def main():
             out = args[1]
         args = args[2:]
     rows = []
-    xv, v = read_xy(os.path.join(data, "mueller_U0.9_vz_z15mm_MR.csv"))
-    xe, eps = read_xy(os.path.join(data, "mueller_U0.9_voidfraction_z16.4mm_MR.csv"))
-    peak = float(v.max())
 
-    def row(source, eps_from, z, b):
+    def row(source, eps_from, z, b, peak=float("nan")):
         rows.append({"profiles": source, "gas_fraction_from": eps_from, "z_mm": z, "net_over_gross": b[0],
                      "upward_m2_s": b[1], "downward_m2_s": b[2], "balancing_upward_factor": b[3],
-                     "balancing_peak_m_s": peak * b[3] if source == "MR" else float("nan")})
+                     "balancing_peak_m_s": peak * b[3]})
 
-    row("MR", "MR 16.4 mm", "15", balance(xv, v, xe, eps))
-    row("MR", "uniform (MR mean)", "15", balance(xv, v, xe, np.full_like(eps, eps.mean())))
+    # each MR velocity profile with the MR gas fraction nearest in height, and with a uniform one
+    for zv, ze in MR_PAIRS:
+        fv = os.path.join(data, f"mueller_U0.9_vz_z{zv}mm_MR.csv")
+        fe = os.path.join(data, f"mueller_U0.9_voidfraction_z{ze}mm_MR.csv")
+        if not (os.path.exists(fv) and os.path.exists(fe)):
+            continue
+        xv_z, v_z = read_xy(fv)
+        xe_z, e_z = read_xy(fe)
+        row("MR", f"MR {ze} mm", zv, balance(xv_z, v_z, xe_z, e_z), float(v_z.max()))
+        row("MR", "uniform (MR mean)", zv, balance(xv_z, v_z, xe_z, np.full_like(e_z, e_z.mean())), float(v_z.max()))
+    xv, v = read_xy(os.path.join(data, "mueller_U0.9_vz_z15mm_MR.csv"))
     for run in args:
         name = os.path.basename(os.path.normpath(run if os.path.basename(os.path.normpath(run)) != "results"
                                                  else os.path.dirname(os.path.normpath(run))))
         f = os.path.join(run, "profile_voidfractiondepthbinned_z15mm.csv")
         if os.path.exists(f):
             xs, es = read_xy(f)
-            row("MR", "run " + name, "15", balance(xv, v, xs, es))
+            row("MR", "run " + name, "15", balance(xv, v, xs, es), float(v.max()))
         for z in HEIGHTS:
             fv = os.path.join(run, f"profile_vzdepthbinned_z{z}mm.csv")
             fe = os.path.join(run, f"profile_voidfractiondepthbinned_z{z}mm.csv")

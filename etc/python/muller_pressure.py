@@ -6,7 +6,9 @@ A bubbling bed carries its whole weight on the gas: the time-averaged frictional
 it equals the particles' buoyant weight per area of the bed's cross-section (momentum balance of the
 column between the distributor and the outlet; the walls' friction on the gas is negligible at these
 speeds). What the walls carry instead (the particles' contacts with the distributor, the front and
-back walls and the side walls) is measured by the DEM (post/wallForce.txt, DEM/in.liggghts).
+back walls and the side walls) is measured by the DEM (post/wallForce.txt, DEM/in.liggghts). The
+bed's expansion: twice the particles' mean height (post/bedHeight.txt; the height of a bed of uniform
+solid fraction with that mean) over the settled bed's 30 mm (Zhang et al. 2023 §V.B).
 
 Reads postProcessing/pInlet (the inlet's area-averaged kinematic p; the outlet holds p = 0) and
 post/wallForce.txt over t_start < t <= t_end. The frictional pressure drop is rho_g (p_inlet - g H)
@@ -20,7 +22,7 @@ import sys
 
 import numpy as np
 
-from dem_series import batch_sem, dem_time_anchor, function_series, read_wall_forces, wall_force_share
+from dem_series import batch_sem, dem_time_anchor, function_series, read_post_series, read_wall_forces, wall_force_share
 
 N_PARTICLES = 9240
 DIAMETER = 1.2e-3          # m
@@ -29,6 +31,7 @@ RHO_G = 1.2                # kg/m3 (constant/transportProperties)
 G = 9.81                   # m/s2
 AREA = 0.044 * 0.010       # m2, the bed's cross-section
 HEIGHT = 0.120             # m, inlet to outlet
+SETTLED_HEIGHT = 0.030     # m, the packed bed's height (Zhang et al. 2023 §V.B)
 DEM_STEP = 6e-6            # s (DEM/materials.liggghts)
 BATCHES = 10
 
@@ -62,6 +65,14 @@ def summary(case, t0, t1):
         row["dp_plus_walls_rel_err"] = (row["dp_pa"] * AREA + share * weight) / weight - 1
     except (OSError, ValueError) as e:
         print(f"pressureDrop.py: no wall forces ({e}): the walls' share not measured")
+    try:
+        tz, z = read_post_series(case, "bedHeight", 1, DEM_STEP, dem_time_anchor(case))
+        wz = (tz > t0 + 1e-12) & (tz <= t1 + 1e-12)
+        # a bed of uniform solid fraction from 0 to H has its particles' mean height at H / 2
+        row.update({"mean_particle_height_mm": 1e3 * float(z[wz, 0].mean()),
+                    "expansion_2zbar_over_settled": 2 * float(z[wz, 0].mean()) / SETTLED_HEIGHT})
+    except (OSError, ValueError) as e:
+        print(f"pressureDrop.py: no bed heights ({e}): the expansion not measured")
     return row
 
 
@@ -81,4 +92,6 @@ def main():
           f"bed's weight {row['weight_per_area_pa']:.2f} Pa per area ({100 * row['dp_rel_err']:+.2f} %)"
           + (f"; the walls carry {100 * row['wall_force_share']:.2f} % of the weight "
              f"(distributor {100 * row['distributor_share']:.2f} %, front and back {100 * row['front_back_share']:.2f} %, "
-             f"sides {100 * row['side_walls_share']:.2f} %)" if "wall_force_share" in row else ""))
+             f"sides {100 * row['side_walls_share']:.2f} %)" if "wall_force_share" in row else "")
+          + (f"; mean particle height {row['mean_particle_height_mm']:.2f} mm (expansion "
+             f"{row['expansion_2zbar_over_settled']:.3f})" if "mean_particle_height_mm" in row else ""))
