@@ -7,7 +7,8 @@ window.py on a synthetic run (errors per averaging window against ones computed 
 the same run with its samples folded by compactSamples.py),
 etc/runArchive (a stopped run packed and unpacked to continue elsewhere), and the binary bed's
 scripts (pressure samples of every start, runs of one case, the wall-corrected reference), and
-gasBypass.py (dense cells without a particle centre, fast cells) on four hand-made cells.
+gasBypass.py (dense cells without a particle centre, fast cells) on four hand-made cells, and the
+Mueller physics checks (net solid flux, minimum fluidization, bubble chords, pressure drop).
 Prints PASS/FAIL per check and "N passed, N failed"."""
 import csv, math, os, random, re, shutil, struct, subprocess, sys, tempfile, time
 
@@ -723,6 +724,57 @@ with tempfile.TemporaryDirectory() as tmp:
             refused.append(str(e).startswith(os.path.join(tmp, name) + ":"))
     check(all(refused), "foam_fields refuses a uniform field without the number of cells, a file without "
           "internalField and a missing file, naming it: %s" % refused)
+
+# the Mueller physics checks (issue 42): muller_flux.balance on profiles whose flux is known,
+# muller_references' minimum fluidization (Di Felice's superficial law near Ergun, the printed slip
+# form above it), muller_bubbles.chords, and muller_pressure on a hand-made run (pressure samples of
+# two starts, wall forces and bed heights with DEM steps that do not start at 0)
+import numpy as np  # noqa: E402
+import muller_flux  # noqa: E402
+import muller_references  # noqa: E402
+import muller_bubbles  # noqa: E402
+import muller_pressure  # noqa: E402
+x = np.linspace(0, 0.044, 441)
+v = 0.1 * np.cos(2 * np.pi * (x - 0.022) / 0.044)       # up in the middle, down at the sides, no net
+b_even = muller_flux.balance(x, v, x, np.full_like(x, 0.5))
+b_dense_up = muller_flux.balance(x, v, x, np.where(v > 0, 0.4, 0.7))   # more solid where it rises
+check(abs(b_even[0]) < 1e-3 and b_dense_up[0] > 0.2 and abs(b_dense_up[3] * b_dense_up[1] + b_dense_up[2]) < 1e-12,
+      "muller_flux: a half-up half-down profile balances at uniform gas fraction (%+.3f), more solid where "
+      "it rises gives a net upward flux (%+.3f) and the balancing factor brings it to zero" % (b_even[0], b_dense_up[0]))
+u_sup, u_slip, u_erg = (muller_references.umf_difelice(0.40), muller_references.umf_difelice(0.40, False),
+                        muller_references.umf_ergun(0.40))
+f_at = muller_references.difelice_force(0.40, u_sup)
+w = 0.40 * (muller_references.RHO_P - muller_references.RHO_G) * muller_references.G * math.pi / 6 * muller_references.D ** 3
+check(abs(f_at / w - 1) < 1e-9 and abs(u_sup / u_erg - 1) < 0.1 and u_slip > 1.2 * u_sup and 0.2 < muller_references.umf_wen_yu() < 0.5,
+      "muller_references: U_mf of Di Felice at eps 0.40 carries the weight (%.3f m/s; Ergun %.3f, slip Re %.3f, Wen-Yu %.3f)"
+      % (u_sup, u_erg, u_slip, muller_references.umf_wen_yu()))
+ch = muller_bubbles.chords([0.9, 0.5, 0.9, 0.9, 0.5, 0.85, 0.85, 0.85], 1e-3, 0.8)
+check(ch == [2e-3, 3e-3], "muller_bubbles.chords: runs of two cells or more above the threshold, one at the wall: %s" % ch)
+with tempfile.TemporaryDirectory() as tmp:
+    for start, t0 in (("5", 5.0), ("5.5", 5.5)):
+        d = os.path.join(tmp, "postProcessing", "pInlet", start)
+        os.makedirs(d)
+        with open(os.path.join(d, "surfaceFieldValue.dat"), "w") as f:
+            f.write("# Time areaAverage(p)\n")
+            for k in range(1, 101):
+                # kinematic p that gives the weight per area plus the gas column; the first start's
+                # samples after 5.5 s are superseded by the second start's (10 % more)
+                dp = muller_pressure.buoyant_weight() / muller_pressure.AREA * (1.1 if start == "5" and t0 + 0.01 * k > 5.5 else 1.0)
+                f.write("%.4f %.8g\n" % (t0 + 0.01 * k, dp / muller_pressure.RHO_G + muller_pressure.G * muller_pressure.HEIGHT))
+    os.makedirs(os.path.join(tmp, "6.0"))
+    open(os.path.join(tmp, "6.0", "dem.restart.step"), "w").write("1000000\n")
+    os.makedirs(os.path.join(tmp, "post"))
+    with open(os.path.join(tmp, "post", "wallForce.txt"), "w") as f, open(os.path.join(tmp, "post", "bedHeight.txt"), "w") as g:
+        for k in range(-200, 1):      # steps before the 6.0 s write: 5.88 ... 6.0 s
+            step = 1000000 + 100 * k * 5
+            f.write("%d %s\n" % (step, " ".join(["%.6g" % (0.01 * muller_pressure.buoyant_weight())] + ["0"] * 9)))
+            g.write("%d 0.02\n" % step)
+    row = muller_pressure.summary(tmp, 5.2, 6.0)
+    check(abs(row["dp_rel_err"]) < 1e-6 and abs(row["wall_force_share"] - 0.01) < 1e-9 and row["samples"] == 80
+          and abs(row["expansion_2zbar_over_settled"] - 4 / 3) < 1e-9,
+          "muller_pressure: two starts' pressure samples (the later replacing the earlier), wall forces and bed "
+          "heights timed from a write's DEM step: dp %+.2e, walls %.4f, %d samples, expansion %.4f"
+          % (row["dp_rel_err"], row["wall_force_share"], row["samples"], row["expansion_2zbar_over_settled"]))
 
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)
