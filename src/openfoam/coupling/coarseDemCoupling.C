@@ -36,10 +36,6 @@ coarseDemCoupling::coarseDemCoupling
     fluid_{rho.value(), nu.value(), g.value()},
     demMesh_(mesh, dict_),
     voidFraction_(dict_, demMesh_),
-    backgroundKernels_(nullptr),
-    binKernels_(nullptr),
-    particleFieldsInterval_(dict_.lookupOrDefault<scalar>("particleFieldsInterval", 0)),
-    particleFieldsIndex_(-1),
     needs_(0),
     halo_(mesh),
     solidVolumeParticles_(0), solidVolumeCells_(0), momentumImbalance_(0), forceScale_(0),
@@ -77,8 +73,8 @@ coarseDemCoupling::coarseDemCoupling
 {
     checkEntries();
     const wordList names(readForceModels());
-    createBackgroundKernels();
-    createOutputFields();
+    exchangeKernels_.reset(new exchangeKernels(dict_, demMesh_, voidFraction_));
+    outputFields_.reset(new particleOutputFields(mesh, dict_, demMesh_, voidFraction_));
     dem_.reset(new liggghtsDem(mesh, dict_));
     checkDemUnits(dem_->lammps(), mesh, dict_);    // DEM box and particles against the mesh
     checkDemCoarseGraining(dem_->lammps(), cgFactor_, dict_);
@@ -91,8 +87,6 @@ coarseDemCoupling::coarseDemCoupling
 
 coarseDemCoupling::~coarseDemCoupling()
 {
-    cdc_kernels_destroy(backgroundKernels_);
-    cdc_kernels_destroy(binKernels_);
 }
 
 void coarseDemCoupling::evolveDem()
@@ -139,7 +133,10 @@ void coarseDemCoupling::couple
     fFluid.correctBoundaryConditions();
     timers_.stop();
 
-    outputFields(cp, cg);                      // alphaPUs, binned fields: no effect on the flow
+    timers_.start(stageTimers::fields);        // alphaPUs, binned fields: no effect on the flow
+    outputFields_->update(cp, cg, halo_, particles_, volume_, state_.v,
+        [this](const cdc_kernels* k, const double* local, int ncomp, double* out) { spread(k, local, ncomp, out); });
+    timers_.stop();
     recordBalances(U);                         // solid volume and momentum for the Coupling line
     checkExplicitRange(alpha);
     if (nCouplings_ == 1) adviseOnSetup(dict_, voidFraction_, mesh_.V(), particles_.radius);
@@ -148,7 +145,7 @@ void coarseDemCoupling::couple
         // a parcel filling a cell beyond the packing limit; dense cells the drag misses
         const word time = mesh_.time().timeName();
         coverage_.checkParcelFill(voidFraction_, volume_, particles_, mesh_.V(), cgFactor_, dict_.name(), time);
-        coverage_.checkDragCoverage(voidFraction_, reactionKernels(), alphaP, dict_.name(), time);
+        coverage_.checkDragCoverage(voidFraction_, exchangeKernels_->reaction(), alphaP, dict_.name(), time);
     }
 }
 
@@ -163,9 +160,7 @@ void coarseDemCoupling::pullParticles()
     reach_.resize(n);
     for (label i = 0; i < n; ++i)
     {
-        const double r = particles_.radius[i];
-        reach_[i] = cdc_kernels_reach(voidFraction_.kernels(), r) + r;
-        if (backgroundKernels_) reach_[i] = max(reach_[i], cdc_kernels_reach(backgroundKernels_, r) + r);
+        reach_[i] = exchangeKernels_->reach(particles_.radius[i]);
     }
     halo_.update(particles_, reach_, ghosts_);
     timers_.stop();
@@ -182,12 +177,9 @@ void coarseDemCoupling::updateVoidFraction(const cdc_particles& cp, const cdc_pa
     timers_.add(stageTimers::alphaP, voidFraction_.alphaPSeconds());
     alphaP.correctBoundaryConditions();
     setFluidFraction(alpha);
-    if (backgroundKernels_)
-    {
-        timers_.start(stageTimers::kernel);
-        buildKernels(demMesh_, backgroundKernels_, cp, cg, halo_, "background kernels");
-        timers_.stop();
-    }
+    timers_.start(stageTimers::kernel);
+    exchangeKernels_->build(cp, cg, halo_);   // the background kernels, when they are kernels of their own
+    timers_.stop();
 }
 
 // The particles' diameters and volumes, the fluid sampled at them, and the enabled forces: the drag

@@ -1,8 +1,8 @@
 /*---------------------------------------------------------------------------*\
     coarseDemCoupling, the particle-fluid exchange: the fluid sampled at the
-    particles (gather, background kernels, dv/dt), the fluid's sources from
-    the particles' forces (src/core/exchange.c) and the output-only particle
-    fields. Values of ghosts come from their owners (particleHalo).
+    particles (gather, background kernels, dv/dt) and the fluid's sources from
+    the particles' forces (src/core/exchange.c). Values of ghosts come from
+    their owners (particleHalo).
 \*---------------------------------------------------------------------------*/
 #include "coarseDemCoupling.H"
 #include "fvc.H"
@@ -20,7 +20,7 @@ void coarseDemCoupling::sampleFluid
     const volScalarField& nuEff, const volVectorField* DUDt
 )
 {
-    const cdc_kernels* k = sampleKernels();
+    const cdc_kernels* k = exchangeKernels_->sample();
     const label n = state_.n;
     // Every field the forces need, gathered in one pass over the kernels and one halo exchange:
     // the fields side by side in one array of cells (each component's sum over a kernel is the
@@ -117,13 +117,13 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
     const label n = particles_.size();
     const bool smooth = voidFraction_.smoothsExchangeFields();
     const bool implicit = switches_.implicitDrag && !smooth;
-    const cdc_kernels* k = reactionKernels();
+    const cdc_kernels* k = exchangeKernels_->reaction();
     withGhosts(K_.cdata(), 1, exchangeK_);
     withGhosts(reinterpret_cast<const double*>(state_.v), 3, exchangeV_);
     withGhosts(reinterpret_cast<const double*>(state_.Uf.cdata()), 3, exchangeUf_);
     withGhosts(reinterpret_cast<const double*>(fReact_.cdata()), 3, exchangeF_);
     // the drag's fluid velocity came from other kernels than the reaction's: the difference explicit
-    const bool correct = implicit && k != sampleKernels();
+    const bool correct = implicit && k != exchangeKernels_->sample();
     if (correct)
     {
         vectorField uKernel(n);
@@ -173,80 +173,6 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
         }
         KslUs.primitiveFieldRef() = Ksl.primitiveField()*U.primitiveField();
     }
-}
-
-bool coarseDemCoupling::particleFieldsDue()
-{
-    const Time& rt = mesh_.time();
-    if (particleFieldsInterval_ <= 0) return true;
-    // the step nearest each multiple of the interval since the start, as an adjustableRunTime
-    // function object samples (Time's and timeControl's index rule), plus the write times
-    const label index = label((rt.value() - rt.startTime().value() + 0.5*rt.deltaTValue())/particleFieldsInterval_);
-    if (index <= particleFieldsIndex_ && !rt.writeTime()) return false;
-    particleFieldsIndex_ = max(index, particleFieldsIndex_);
-    return true;
-}
-
-void coarseDemCoupling::binParticles
-(
-    const cdc_particles& local, const cdc_particles& ghosts, const vectorField& volumeVelocity
-)
-{
-    buildKernels(demMesh_, binKernels_, local, ghosts, halo_, "binnedParticleFields (centre kernels)");
-    spread(binKernels_, volume_.data(), 1, alphaPBinned().primitiveFieldRef().data());
-    spread(binKernels_, reinterpret_cast<const double*>(volumeVelocity.cdata()), 3,
-           reinterpret_cast<double*>(alphaPUsBinned().primitiveFieldRef().data()));
-    alphaPBinned().correctBoundaryConditions();
-    alphaPUsBinned().correctBoundaryConditions();
-    if (binnedSpecies_) binSpecies();
-}
-
-// alphaPBinned of each DEM atom type (binnedSpeciesFields): the species of a polydisperse bed apart,
-// counted in the cell of their centre as alphaPBinned is (their sum is alphaPBinned)
-void coarseDemCoupling::binSpecies()
-{
-    const label n = particles_.size();
-    label nTypes = 0;
-    for (label i = 0; i < n; ++i) nTypes = max(nTypes, label(particles_.type[i]));
-    reduce(nTypes, maxOp<label>());
-    const word t0 = mesh_.time().timeName();
-    for (label t = alphaPBinnedType_.size() + 1; t <= nTypes; ++t)
-    {
-        alphaPBinnedType_.append
-        (
-            new volScalarField
-            (
-                IOobject("alphaPBinned.type" + Foam::name(t), t0, mesh_, IOobject::NO_READ, IOobject::AUTO_WRITE),
-                mesh_, dimensionedScalar(dimless, Zero), zeroGradientFvPatchScalarField::typeName
-            )
-        );
-    }
-    std::vector<double> q(n);
-    forAll(alphaPBinnedType_, k)
-    {
-        for (label i = 0; i < n; ++i) q[i] = particles_.type[i] == k + 1 ? volume_[i] : 0.0;
-        spread(binKernels_, q.data(), 1, alphaPBinnedType_[k].primitiveFieldRef().data());
-        alphaPBinnedType_[k].correctBoundaryConditions();
-    }
-}
-
-// Output-only fields (no effect on the flow): particle volume x velocity, spread with the method's
-// kernels and/or binned by centre; only on the steps they are sampled or written.
-void coarseDemCoupling::outputFields(const cdc_particles& cp, const cdc_particles& cg)
-{
-    if (!(alphaPUs.valid() || binKernels_) || !particleFieldsDue()) return;
-    timers_.start(stageTimers::fields);
-    vectorField q(particles_.size());
-    forAll(q, i) q[i] = volume_[i]*state_.v[i];
-    if (alphaPUs.valid())
-    {
-        double* aUs = reinterpret_cast<double*>(alphaPUs().primitiveFieldRef().data());
-        spread(reinterpret_cast<const double*>(q.cdata()), 3, aUs);
-        voidFraction_.smoothLikeAlpha(aUs, 3);   // as alphaP, so alphaPUs/alphaP is a velocity
-        alphaPUs().correctBoundaryConditions();
-    }
-    if (binKernels_) binParticles(cp, cg, q);
-    timers_.stop();
 }
 
 void coarseDemCoupling::particleAccelerations()
