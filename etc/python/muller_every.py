@@ -6,7 +6,7 @@ velocity, the physics checks, and the recommendation rule of validation/muller/r
 For each run's results folder (profile_*.csv from profiles.py; pressure.csv from pressureDrop.py where
 the run has it): the RMS error of the headline instrument (depth-averaged, particles binned by the cell
 of their centre) against each MR file of validation/muller/data at U, with the run's mean batch SEM;
-the peak of v_z at 15, 25 and 35 mm; the solid's net flux at 15 mm over the gross (muller_flux: 0 in a
+the peak of v_z at 15, 25 and 35 mm and its minimum at 15 mm (the near-wall downflow); the solid's net flux at 15 mm over the gross (muller_flux: 0 in a
 steady bed); the pressure drop against the weight, the walls' share and the expansion.
 
 The rule (written before the runs it judges): a set-up is WORSE than another on a profile when its RMS
@@ -45,6 +45,8 @@ def measure(results, data, U):
         if os.path.exists(f):
             x, v = read_xy(f)
             row[f"vz_peak_z{z}"] = float(v.max())
+            if z == "15":
+                row["vz_min_z15"] = float(v.min())   # the near-wall downflow
     fv = os.path.join(results, "profile_vzdepthbinned_z15mm.csv")
     fe = os.path.join(results, "profile_voidfractiondepthbinned_z15mm.csv")
     if os.path.exists(fv) and os.path.exists(fe):
@@ -107,7 +109,7 @@ def main():
     rows = [measure(r, data, U) for r in args]
     profiles = verdicts(rows)
     cols = ["run"] + [k + s for k in profiles for s in ("_rms", "_sem")] + \
-        [f"vz_peak_z{z}" for z in PEAK_HEIGHTS] + ["net_flux_z15", "dp_rel_err", "dp_sem_pa",
+        [f"vz_peak_z{z}" for z in PEAK_HEIGHTS] + ["vz_min_z15", "net_flux_z15", "dp_rel_err", "dp_sem_pa",
                                                    "wall_force_share", "expansion_2zbar_over_settled", "verdict"]
     cols = [c for c in cols if any(c in r for r in rows)]
     fmt = lambda v: f"{v:.4g}" if isinstance(v, float) else str(v)
@@ -122,6 +124,7 @@ def main():
                 "± mean batch SEM) and the physics checks; the rule: muller_every.py's docstring.\n\n")
         heads = ["run"] + [k for k in profiles] + [f"v_z peak {z} mm" for z in PEAK_HEIGHTS
                                                      if f"vz_peak_z{z}" in cols] + \
+            (["v_z min 15 mm"] if "vz_min_z15" in cols else []) + \
             [h for c, h in (("net_flux_z15", "net flux 15 mm"), ("dp_rel_err", "dp - weight"),
                             ("wall_force_share", "walls' share"), ("expansion_2zbar_over_settled", "expansion"))
              if c in cols] + ["verdict"]
@@ -130,6 +133,8 @@ def main():
             cells = [r["run"]] + [f"{r[k + '_rms']:.3f} ± {r.get(k + '_sem', float('nan')):.3f}" if k + "_rms" in r else "-"
                                   for k in profiles]
             cells += [f"{r[f'vz_peak_z{z}']:.3f}" if f"vz_peak_z{z}" in r else "-" for z in PEAK_HEIGHTS if f"vz_peak_z{z}" in cols]
+            if "vz_min_z15" in cols:
+                cells.append(f"{r['vz_min_z15']:.3f}" if "vz_min_z15" in r else "-")
             for c, scale, unit in (("net_flux_z15", 1, ""), ("dp_rel_err", 100, " %"), ("wall_force_share", 100, " %"),
                                    ("expansion_2zbar_over_settled", 1, "")):
                 if c in cols:
