@@ -212,7 +212,10 @@ void coarseDemCoupling::particleForces
     state_.d = diameter_.data();
     state_.volume = volume_.data();
     sampleFluid(U, alpha, p, nuEff, DUDt);
-    if (needs_ & forceModel::needDvDt) particleAccelerations();
+    if (needs_ & forceModel::needDvDt)
+    {
+        velocities_.accelerations(particles_, state_.v, mesh_.time().deltaTValue(), state_.dvdt);
+    }
 
     K_.setSize(n);
     K_ = 0;

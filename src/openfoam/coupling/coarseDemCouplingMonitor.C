@@ -112,13 +112,7 @@ void coarseDemCoupling::report(Ostream& os) const
             << solidVolumeAlpha_ << " (rel. err " << (solidVolumeParticles_ > 0
                ? mag(solidVolumeAlpha_ - solidVolumeParticles_)/solidVolumeParticles_ : 0) << ")";
     }
-    if (needs_ & forceModel::needDvDt)
-    {
-        // particles without a velocity of the last coupling (at the start or restart: all; later:
-        // inserted ones) get dv/dt = 0 for that step
-        os  << ", dv/dt unknown for " << firstDvDt_ << " particles at the first coupling, "
-            << unknownDvDt_ << " since";
-    }
+    if (needs_ & forceModel::needDvDt) velocities_.report(os);
     if (!switches_.implicitDrag)
     {
         os  << ", explicit fluid drag dt Ksl/alpha max " << explicitRange_.fluidRatio() << " ("
