@@ -70,8 +70,9 @@ else
         say "fetching Debian's liggghts source package into $cache/debsrc"
         say "(a '404 Not Found' for liggghts_*.debian.tar.xz is expected: only the orig tarball is used)"
         # The Debian patch tarball of liggghts 3.8.0+repack1-9 is missing on the mirror, so
-        # apt-get source fails after fetching the orig tarball: judge by the tarball instead.
-        (cd "$cache/debsrc" && apt-get source --download-only liggghts) || true
+        # apt-get source fails after fetching the orig tarball: judge by the tarball instead. apt's
+        # messages keep their text; the archive's address is the machine's, not the build's: left out.
+        (cd "$cache/debsrc" && apt-get -qq source --download-only liggghts 2>&1 | sed -E 's#[a-z]+://[^ ]+#<archive URL>#g') || true
         tarball="$(ls "$cache"/debsrc/liggghts_*.orig.tar.* 2>/dev/null | head -n1 || true)"
         [ -n "$tarball" ] || die "could not download the liggghts source package. Check that a
     deb-src line for bookworm main is enabled (Allwmake adds /etc/apt/sources.list.d/coarsedem-src.sources),

@@ -73,7 +73,7 @@ if [ "$user_tree" = 0 ]; then
     tarball="$(ls "$cache"/debsrc/openfoam_"$upstream".orig.tar.* 2>/dev/null | head -n1 || true)"
     if [ -z "$tarball" ]; then
         say "downloading Debian's openfoam $version source package (about 45 MB)"
-        (cd "$cache/debsrc" && apt-get source --download-only "openfoam=$version") \
+        (cd "$cache/debsrc" && apt-get -qq source --download-only "openfoam=$version") \
             || die "apt-get source --download-only openfoam=$version failed. Check that a deb-src line
     for bookworm main is enabled (Allwmake adds /etc/apt/sources.list.d/coarsedem-src.sources)
     and run 'apt-get update'."
