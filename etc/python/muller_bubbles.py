@@ -73,8 +73,9 @@ def main():
             y = rec.get("y") or rec.get("distance")
             dy = (y[-1] - y[0]) / (len(y) - 1)
             eps = [1 - a for a in rec["alphaPBinned"]]
-            all_chords += chords(eps, dy, threshold)
-            in_bubble += sum(c for c in chords(eps, dy, threshold)) / dy
+            found = chords(eps, dy, threshold)
+            all_chords += found
+            in_bubble += sum(found) / dy
             n_points += len(eps)
         if not n_points:
             continue

@@ -44,7 +44,8 @@ QUANTITY = {"voidfraction": "void_fraction", "vz": "vz_particle_m_per_s",
             "voidfractiondepth": "void_fraction_depth"}
 
 def compare_one(data_path, sim_path, q, h, U, out):
-    """RMS and maximum error of one simulated profile against one data file, and its PNG."""
+    """RMS and maximum error of one simulated profile against one data file, and its PNG in out
+    (none when out is None)."""
     _, dx, dy, _ = read_profile(data_path)
     _, sx, sy, se = read_profile(sim_path)
     sim = [interp(x, sx, sy) for x in dx]
@@ -61,6 +62,8 @@ def compare_one(data_path, sim_path, q, h, U, out):
     row = {"quantity": QUANTITY.get(q, q), "z_mm": h, "rms_error": rms, "max_error": mx,
            "mean_batch_sem": mean_sem, "n_points": len(dx), "rms_error_symmetrised": rms_sym,
            "rms_error_noise_removed": rms_clean}
+    if out is None:
+        return row
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -89,7 +92,10 @@ def compare_one(data_path, sim_path, q, h, U, out):
 
 
 def compare(results, data_dir, U, out):
-    os.makedirs(out, exist_ok=True)
+    """The rows of compare_one for every data file at U; with out, also errors.csv, errors.md and the
+    PNGs written there (out None: the rows only)."""
+    if out is not None:
+        os.makedirs(out, exist_ok=True)
     rows = []
     for path in sorted(glob.glob(os.path.join(data_dir, "mueller_U*_*_z*mm_MR.csv"))):
         m = re.match(r"mueller_U([0-9.]+)_(\w+?)_z([0-9.]+)mm_MR\.csv", os.path.basename(path))
@@ -104,6 +110,8 @@ def compare(results, data_dir, U, out):
             sim_path = os.path.join(results, f"profile_{q}_z{h}mm.csv")
             if os.path.exists(sim_path):
                 rows.append(compare_one(path, sim_path, q, h, U, out))
+    if out is None:
+        return rows
     with open(os.path.join(out, "errors.csv"), "w") as f:
         f.write("quantity,z_mm,rms_error,max_error,mean_batch_sem,n_points,rms_error_symmetrised,rms_error_noise_removed\n")
         for r in rows:

@@ -19,27 +19,20 @@ import csv
 import math
 import os
 import sys
-import tempfile
 
 import muller_compare
-from muller_flux import balance, read_xy
+from muller_flux import balance, read_xy, run_name
 
 PEAK_HEIGHTS = ("15", "25", "35")
-
-
-def run_name(results):
-    p = os.path.normpath(results)
-    return os.path.basename(os.path.dirname(p)) if os.path.basename(p) == "results" else os.path.basename(p)
 
 
 def measure(results, data, U):
     """{column: value} of one run."""
     row = {"run": run_name(results)}
-    with tempfile.TemporaryDirectory() as tmp:
-        for r in muller_compare.compare(results, data, U, tmp):
-            if r["quantity"].endswith("_depth_binned") or r["quantity"].endswith("_depth_binned_m_per_s"):
-                key = ("gas" if r["quantity"].startswith("void") else "vz") + "_z" + str(r["z_mm"])
-                row[key + "_rms"], row[key + "_sem"] = r["rms_error"], r["mean_batch_sem"]
+    for r in muller_compare.compare(results, data, U, None):
+        if r["quantity"].endswith("_depth_binned") or r["quantity"].endswith("_depth_binned_m_per_s"):
+            key = ("gas" if r["quantity"].startswith("void") else "vz") + "_z" + str(r["z_mm"])
+            row[key + "_rms"], row[key + "_sem"] = r["rms_error"], r["mean_batch_sem"]
     for z in PEAK_HEIGHTS:
         f = os.path.join(results, f"profile_vzdepthbinned_z{z}mm.csv")
         if os.path.exists(f):

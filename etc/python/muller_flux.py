@@ -22,7 +22,6 @@ six heights (depth-averaged, binned: the headline profiles).
 Writes the CSV (default validation/muller/results/fluxBalance.csv) and prints a table.
 """
 import csv
-import glob
 import os
 import sys
 
@@ -39,6 +38,12 @@ def read_xy(path):
         rows = [r for r in csv.reader(l for l in f if l.strip() and not l.startswith("#"))]
     a = np.array([[float(v) for v in r[:2]] for r in rows[1:]])
     return a[:, 0], a[:, 1]
+
+
+def run_name(results):
+    """A run's name from its folder or its results/ folder."""
+    p = os.path.normpath(results)
+    return os.path.basename(os.path.dirname(p)) if os.path.basename(p) == "results" else os.path.basename(p)
 
 
 def balance(x_v, v, x_e, eps):
@@ -72,19 +77,19 @@ def main():
                      "balancing_peak_m_s": peak * b[3]})
 
     # each MR velocity profile with the MR gas fraction nearest in height, and with a uniform one
+    mr_v = {}
     for zv, ze in MR_PAIRS:
         fv = os.path.join(data, f"mueller_U0.9_vz_z{zv}mm_MR.csv")
         fe = os.path.join(data, f"mueller_U0.9_voidfraction_z{ze}mm_MR.csv")
         if not (os.path.exists(fv) and os.path.exists(fe)):
             continue
-        xv_z, v_z = read_xy(fv)
+        xv_z, v_z = mr_v[zv] = read_xy(fv)
         xe_z, e_z = read_xy(fe)
         row("MR", f"MR {ze} mm", zv, balance(xv_z, v_z, xe_z, e_z), float(v_z.max()))
         row("MR", "uniform (MR mean)", zv, balance(xv_z, v_z, xe_z, np.full_like(e_z, e_z.mean())), float(v_z.max()))
-    xv, v = read_xy(os.path.join(data, "mueller_U0.9_vz_z15mm_MR.csv"))
+    xv, v = mr_v["15"]
     for run in args:
-        name = os.path.basename(os.path.normpath(run if os.path.basename(os.path.normpath(run)) != "results"
-                                                 else os.path.dirname(os.path.normpath(run))))
+        name = run_name(run)
         f = os.path.join(run, "profile_voidfractiondepthbinned_z15mm.csv")
         if os.path.exists(f):
             xs, es = read_xy(f)

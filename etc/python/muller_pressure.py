@@ -49,12 +49,13 @@ def summary(case, t0, t1):
                          "(postProcessing/pInlet: the controlDict's pInlet function)")
     dp = RHO_G * (p[w] - G * HEIGHT)
     weight = buoyant_weight()
+    anchor = dem_time_anchor(case)   # the DEM step's time: the shipped state's steps do not start at 0
     row = {"t_start": t0, "t_end": t1, "samples": int(w.sum()),
            "dp_pa": float(dp.mean()), "dp_sem_pa": batch_sem(dp, BATCHES),
            "weight_per_area_pa": weight / AREA}
     row["dp_rel_err"] = row["dp_pa"] / row["weight_per_area_pa"] - 1
     try:
-        tw, wf = read_wall_forces(case, DEM_STEP, dem_time_anchor(case))
+        tw, wf = read_wall_forces(case, DEM_STEP, anchor)
         ww = (tw > t0 + 1e-12) & (tw <= t1 + 1e-12)
         share, share_sem = wall_force_share(wf[ww], weight) if ww.sum() >= 2 else (float("nan"),) * 2
         # each wall's share: distributor, lid, front and back (x), side walls (y)
@@ -66,7 +67,7 @@ def summary(case, t0, t1):
     except (OSError, ValueError) as e:
         print(f"pressureDrop.py: no wall forces ({e}): the walls' share not measured")
     try:
-        tz, z = read_post_series(case, "bedHeight", 1, DEM_STEP, dem_time_anchor(case))
+        tz, z = read_post_series(case, "bedHeight", 1, DEM_STEP, anchor)
         wz = (tz > t0 + 1e-12) & (tz <= t1 + 1e-12)
         # a bed of uniform solid fraction from 0 to H has its particles' mean height at H / 2
         row.update({"mean_particle_height_mm": 1e3 * float(z[wz, 0].mean()),

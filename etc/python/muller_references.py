@@ -22,6 +22,8 @@ import math
 import os
 import sys
 
+from liquid_bed_references import difelice_cd_chi   # Cd and chi of DiFeliceDrag.C
+
 D, RHO_P, RHO_G, NU, G = 1.2e-3, 1000.0, 1.2, 1.5e-5, 9.81
 MU = NU * RHO_G
 N, AREA, SETTLED = 9240, 0.044 * 0.010, 0.030
@@ -31,8 +33,7 @@ EPS_SETTLED = 1 - N * math.pi / 6 * D ** 3 / (AREA * SETTLED)
 def difelice_force(eps, U, superficial=True):
     ur = U / eps
     re = max((eps if superficial else 1.0) * ur * D / NU, 1e-12)
-    cd = (0.63 + 4.8 / math.sqrt(re)) ** 2
-    chi = 3.7 - 0.65 * math.exp(-(1.5 - math.log10(re)) ** 2 / 2)
+    cd, chi = difelice_cd_chi(re)
     return math.pi / 8 * cd * RHO_G * D ** 2 * eps ** (2 - chi) * ur ** 2
 
 
