@@ -3,7 +3,7 @@
 # slow the gas over a cell or two on each side, which shifts the drag, and so the particles' upflow,
 # towards the mid-plane. Applied by Allrun -ingredient gasSlip to a case directory ($1).
 set -e
-for f in "$1"/0/U "$1"/[0-9]*/U; do
+for f in "$1"/[0-9]*/U; do   # 0/U and the state's time folder
     [ -f "$f" ] || continue
     LC_ALL=C sed -i 's/walls  { type noSlip; }/walls  { type slip; }/; /^    walls$/,/^    }$/ s/type            noSlip;/type            slip;/' "$f"
 done
