@@ -23,8 +23,8 @@ CASES = {  # E (Pa), nu, e, rho (kg/m3), d (m), relative impact speeds (m/s)
     "khan": dict(E=1e5, nu=0.23, e=0.1, rho=2000.0, d=0.3e-3, speeds=(0.01, 0.1, 1.0)),
     "muller": dict(E=1e7, nu=0.33, e=0.9, rho=1000.0, d=1.2e-3, speeds=(0.1, 1.0, 3.0)),
 }
-STEPS = {"khan": (1e-5, 2e-5), "muller": (3e-6, 6e-6)}  # the tutorial's DEM step before and after issue 44
-FRACTIONS = (0.02, 0.05, 0.0875, 0.10, 0.15, 0.175, 0.20, 0.25, 0.30)
+STEPS = {"khan": (1e-5, 2e-5, 4e-5), "muller": (3e-6, 6e-6, 1e-5)}  # the tutorials' DEM steps: before issue 44, then 2x, then 4x (khan) and 3.3x (muller)
+FRACTIONS = (0.02, 0.05, 0.0875, 0.10, 0.15, 0.175, 0.20, 0.25, 0.30, 0.35, 0.40)
 ROW = re.compile(r"^\s*\d+\s+(\S+)\s+(\S+)\s*$")
 
 

@@ -85,6 +85,18 @@ def batch_sem(x, nb=NB):
     return float(np.std(means, ddof=1) / math.sqrt(nb))
 
 
+def dem_script_step(run, script):
+    """The DEM step (s) of the run's DEM script DEM/SCRIPT (its timestep line); None when the run has
+    no such script or the script no such line (a kept copy of results/ alone)."""
+    path = os.path.join(run, "DEM", script)
+    if os.path.isfile(path):
+        with open(path) as f:
+            for line in f:
+                if line.split()[:1] == ["timestep"]:
+                    return float(line.split()[1])
+    return None
+
+
 def dem_time_anchor(run):
     """(DEM step, time) of the run's latest write that holds a DEM restart (<time>/dem.restart.step,
     in the case or in processor0): the DEM's step count at a time, for series that record steps,

@@ -26,6 +26,7 @@ OUT gets stiffness.md (the table and the verdict); the same lines are printed, t
 """
 import math, os, sys
 
+from dem_series import dem_script_step
 from khan_runs import read_run  # one reader of a run's results for compare.py and this
 
 TOLERANCE = {"plateau": 0.01, "height": 0.5, "dp": 0.01, "mixing": 1.0}
@@ -38,12 +39,7 @@ def dem_dt(run):
     v = run["bed"].get("dem_dt_s")
     if v:
         return float(v)
-    path = os.path.join(run.get("dir", ""), "DEM", "in.liggghts")
-    if os.path.isfile(path):
-        for line in open(path):
-            if line.split()[:1] == ["timestep"]:
-                return float(line.split()[1])
-    return None
+    return dem_script_step(run.get("dir", ""), "in.liggghts")
 
 
 def compared_setting(soft, stiff):

@@ -22,7 +22,8 @@ import sys
 
 import numpy as np
 
-from dem_series import batch_sem, dem_time_anchor, function_series, read_post_series, read_wall_forces, wall_force_share
+from dem_series import (batch_sem, dem_script_step, dem_time_anchor, function_series, read_post_series,
+                        read_wall_forces, wall_force_share)
 
 N_PARTICLES = 9240
 DIAMETER = 1.2e-3          # m
@@ -32,7 +33,6 @@ G = 9.81                   # m/s2
 AREA = 0.044 * 0.010       # m2, the bed's cross-section
 HEIGHT = 0.120             # m, inlet to outlet
 SETTLED_HEIGHT = 0.030     # m, the packed bed's height (Zhang et al. 2023 §V.B)
-DEM_STEP = 6e-6            # s (DEM/materials.liggghts)
 BATCHES = 10
 
 
@@ -50,12 +50,15 @@ def summary(case, t0, t1):
     dp = RHO_G * (p[w] - G * HEIGHT)
     weight = buoyant_weight()
     anchor = dem_time_anchor(case)   # the DEM step's time: the shipped state's steps do not start at 0
+    dem_dt = dem_script_step(case, "materials.liggghts")   # the run's own (6e-6 s before 1e-5 s)
     row = {"t_start": t0, "t_end": t1, "samples": int(w.sum()),
            "dp_pa": float(dp.mean()), "dp_sem_pa": batch_sem(dp, BATCHES),
            "weight_per_area_pa": weight / AREA}
     row["dp_rel_err"] = row["dp_pa"] / row["weight_per_area_pa"] - 1
     try:
-        tw, wf = read_wall_forces(case, DEM_STEP, anchor)
+        if dem_dt is None:
+            raise OSError("no timestep line in DEM/materials.liggghts")
+        tw, wf = read_wall_forces(case, dem_dt, anchor)
         ww = (tw > t0 + 1e-12) & (tw <= t1 + 1e-12)
         share, share_sem = wall_force_share(wf[ww], weight) if ww.sum() >= 2 else (float("nan"),) * 2
         # each wall's share: distributor, lid, front and back (x), side walls (y)
@@ -67,7 +70,9 @@ def summary(case, t0, t1):
     except (OSError, ValueError) as e:
         print(f"pressureDrop.py: no wall forces ({e}): the walls' share not measured")
     try:
-        tz, z = read_post_series(case, "bedHeight", 1, DEM_STEP, anchor)
+        if dem_dt is None:
+            raise OSError("no timestep line in DEM/materials.liggghts")
+        tz, z = read_post_series(case, "bedHeight", 1, dem_dt, anchor)
         wz = (tz > t0 + 1e-12) & (tz <= t1 + 1e-12)
         # a bed of uniform solid fraction from 0 to H has its particles' mean height at H / 2
         row.update({"mean_particle_height_mm": 1e3 * float(z[wz, 0].mean()),
