@@ -36,8 +36,8 @@ coarseDemCoupling::coarseDemCoupling
     fluid_{rho.value(), nu.value(), g.value()},
     demMesh_(mesh, dict_),
     voidFraction_(dict_, demMesh_),
-    needs_(0),
     halo_(mesh),
+    transfer_(demMesh_, halo_, particles_, ghosts_),
     solidVolumeParticles_(0), solidVolumeCells_(0), momentumImbalance_(0), forceScale_(0),
     nParticles_(0),
     inventory_(mesh, dict_, switches_.allowParticleLoss),
@@ -72,7 +72,7 @@ coarseDemCoupling::coarseDemCoupling
     )
 {
     checkEntries();
-    const wordList names(readForceModels());
+    forces_.reset(new particleForces(dict_, modelB_, fluid_));
     exchangeKernels_.reset(new exchangeKernels(dict_, demMesh_, voidFraction_));
     outputFields_.reset(new particleOutputFields(mesh, dict_, demMesh_, voidFraction_));
     dem_.reset(new liggghtsDem(mesh, dict_));
@@ -82,7 +82,7 @@ coarseDemCoupling::coarseDemCoupling
     checkDemNeighbours(dem_->lammps(), dict_, checkDemTimestep(dem_->lammps(), dict_));
     keepRestartForces_ = dem_->restarted();
 
-    printSummary(names);
+    printSummary();
 }
 
 coarseDemCoupling::~coarseDemCoupling()
@@ -122,7 +122,11 @@ void coarseDemCoupling::couple
     const cdc_particles cg = {int32_t(ghosts_.size()), ghosts_.x.data(), ghosts_.radius.data(),
                               reinterpret_cast<const int64_t*>(ghosts_.id.data()), nullptr};
     updateVoidFraction(cp, cg, alpha);         // kernels, alpha_p, alpha
-    particleForces(U, alpha, p, nuEff, DUDt);  // K_, fOther_, fReact_ per particle
+    timers_.start(stageTimers::forces);       // the fluid sampled at the particles, their forces
+    forces_->setParticles(particles_, cgFactor_, mesh_.time().timeName());
+    sampleFluid(U, alpha, p, nuEff, DUDt);
+    forces_->evaluate(particles_, fluid_, modelB_, mesh_.time().deltaTValue());
+    timers_.stop();
     pushForces();                              // to the DEM for its next segment
 
     timers_.start(stageTimers::sources);
@@ -134,8 +138,8 @@ void coarseDemCoupling::couple
     timers_.stop();
 
     timers_.start(stageTimers::fields);        // alphaPUs, binned fields: no effect on the flow
-    outputFields_->update(cp, cg, halo_, particles_, volume_, state_.v,
-        [this](const cdc_kernels* k, const double* local, int ncomp, double* out) { spread(k, local, ncomp, out); });
+    outputFields_->update(cp, cg, halo_, particles_, forces_->volumes(), forces_->state().v,
+        [this](const cdc_kernels* k, const double* local, int ncomp, double* out) { transfer_.spread(k, local, ncomp, out); });
     timers_.stop();
     recordBalances(U);                         // solid volume and momentum for the Coupling line
     checkExplicitRange(alpha);
@@ -144,7 +148,7 @@ void coarseDemCoupling::couple
     {
         // a parcel filling a cell beyond the packing limit; dense cells the drag misses
         const word time = mesh_.time().timeName();
-        coverage_.checkParcelFill(voidFraction_, volume_, particles_, mesh_.V(), cgFactor_, dict_.name(), time);
+        coverage_.checkParcelFill(voidFraction_, forces_->volumes(), particles_, mesh_.V(), cgFactor_, dict_.name(), time);
         coverage_.checkDragCoverage(voidFraction_, exchangeKernels_->reaction(), alphaP, dict_.name(), time);
     }
 }
@@ -182,97 +186,13 @@ void coarseDemCoupling::updateVoidFraction(const cdc_particles& cp, const cdc_pa
     timers_.stop();
 }
 
-// The particles' diameters and volumes, the fluid sampled at them, and the enabled forces: the drag
-// coefficient K_ (drag K (u_f - v)), the other forces fOther_, of which fReact_ acts back on the fluid.
-void coarseDemCoupling::particleForces
-(
-    const volVectorField& U, const volScalarField& alpha, const volScalarField& p,
-    const volScalarField& nuEff, const volVectorField* DUDt
-)
-{
-    const scalar pi = constant::mathematical::pi;
-    const label n = particles_.size();
-    timers_.start(stageTimers::forces);
-    diameter_.resize(n);
-    volume_.resize(n);
-    for (label i = 0; i < n; ++i)
-    {
-        const double r = particles_.radius[i];
-        if (!std::isfinite(particles_.v[3*i]) || !std::isfinite(particles_.v[3*i + 1]) || !std::isfinite(particles_.v[3*i + 2]))
-        {
-            FatalErrorInFunction
-                << "particle " << label(particles_.id[i]) << " has a non-finite velocity at time "
-                << mesh_.time().timeName() << " (DEM diverged: check the DEM time step)" << exit(FatalError);
-        }
-        diameter_[i] = 2*r/cgFactor_;
-        volume_[i] = 4.0/3.0*pi*r*r*r;
-    }
-    state_.n = n;
-    state_.v = reinterpret_cast<const vector*>(particles_.v.data());
-    state_.d = diameter_.data();
-    state_.volume = volume_.data();
-    sampleFluid(U, alpha, p, nuEff, DUDt);
-    if (needs_ & forceModel::needDvDt)
-    {
-        velocities_.accelerations(particles_, state_.v, mesh_.time().deltaTValue(), state_.dvdt);
-    }
-
-    K_.setSize(n);
-    K_ = 0;
-    fOther_.setSize(n);
-    fOther_ = Zero;
-    fReact_.setSize(n);
-    fReact_ = Zero;
-    scalarField Ki(n);
-    vectorField fi(n);
-    for (const forceModel& fm : forces_)
-    {
-        if (fm.isDrag())
-        {
-            Ki = 0;
-            fm.dragCoefficient(state_, fluid_, Ki);
-            K_ += Ki;
-        }
-        else
-        {
-            fi = Zero;
-            fm.addForce(state_, fluid_, fi);
-            fOther_ += fi;
-            if (fm.reactsOnFluid(modelB_)) fReact_ += fi;
-        }
-    }
-    // Model B without gradPForce (Zhou et al. 2010, CFDEM's modelType B): the fluid carries -grad(p)
-    // and every reaction; the particles get the dynamic pressure gradient's share through the drag
-    // divided by the fluid fraction, for every drag law (without it a gas bed at eps 0.42 would
-    // fluidize at 0.77 instead of 0.43 m/s)
-    if (dragOverAlpha_)
-    {
-        forAll(K_, i) K_[i] /= state_.alphaf[i];
-    }
-    timers_.stop();
-}
-
 // The forces to the DEM for its next segment: with implicitParticleDrag the other forces as a force
 // and the drag as K and u_f (the fix applies K (u_f - v) with v of each DEM step), else all as a force.
 // A run's first coupling after a restart keeps the forces stored in the DEM restart instead.
 void coarseDemCoupling::pushForces()
 {
-    const label n = particles_.size();
     timers_.start(stageTimers::forces);
-    force_.resize(3*n);
-    dragK_.resize(switches_.implicitParticleDrag ? n : 0);
-    dragUf_.resize(switches_.implicitParticleDrag ? 3*n : 0);
-    for (label i = 0; i < n; ++i)
-    {
-        const vector f = particleForce(i);
-        const vector fDem = switches_.implicitParticleDrag ? fOther_[i] : f;
-        for (direction d = 0; d < 3; ++d) force_[3*i + d] = fDem[d];
-        if (switches_.implicitParticleDrag)
-        {
-            dragK_[i] = K_[i];
-            for (direction d = 0; d < 3; ++d) dragUf_[3*i + d] = state_.Uf[i][d];
-        }
-    }
+    forces_->packForDem(switches_.implicitParticleDrag);
     timers_.stop();
     timers_.start(stageTimers::push);
     if (keepRestartForces_)
@@ -282,8 +202,8 @@ void coarseDemCoupling::pushForces()
     }
     else
     {
-        dem_->push(force_);
-        if (switches_.implicitParticleDrag) dem_->pushDrag(dragK_, dragUf_);
+        dem_->push(forces_->demForce());
+        if (switches_.implicitParticleDrag) dem_->pushDrag(forces_->demDragK(), forces_->demDragUf());
         exchange_.setPending(nCouplings_ > 1);
     }
     timers_.stop();
@@ -342,7 +262,7 @@ void coarseDemCoupling::write()
         for (label i = 0; i < n; ++i)
         {
             d[i] = 2*particles_.radius[i];
-            f[i] = particleForce(i);
+            f[i] = forces_->force(i);
         }
         writeParticleCloud(mesh_, "particles", particles_, cdc_kernels_hosts(voidFraction_.kernels()), d, f);
     }

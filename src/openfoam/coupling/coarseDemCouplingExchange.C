@@ -21,7 +21,8 @@ void coarseDemCoupling::sampleFluid
 )
 {
     const cdc_kernels* k = exchangeKernels_->sample();
-    const label n = state_.n;
+    particleFluidState& state = forces_->state();
+    const label n = state.n;
     // Every field the forces need, gathered in one pass over the kernels and one halo exchange:
     // the fields side by side in one array of cells (each component's sum over a kernel is the
     // same as gathered alone).
@@ -32,32 +33,32 @@ void coarseDemCoupling::sampleFluid
         out.setSize(n);
         fields.push_back({reinterpret_cast<const double*>(field.cdata()), 3, reinterpret_cast<double*>(out.data())});
     };
-    addVector(U.primitiveField(), state_.Uf);
-    state_.alphaf.setSize(n);
-    fields.push_back({alpha.primitiveField().cdata(), 1, state_.alphaf.data()});
+    addVector(U.primitiveField(), state.Uf);
+    state.alphaf.setSize(n);
+    fields.push_back({alpha.primitiveField().cdata(), 1, state.alphaf.data()});
     tmp<volVectorField> gradP, divTau, vorticity;
     // With no particle on any rank (an open system before its first particle, a gas-only run) the
     // derived fields would be computed for nobody: the stress divergence alone cost 14 % of the
     // particleJet gas run
-    const int needs = nParticles_ > 0 ? needs_ : 0;
+    const int needs = nParticles_ > 0 ? forces_->needs() : 0;
     if (needs & forceModel::needGradP)
     {
         gradP = fvc::grad(p);
-        addVector(gradP().primitiveField(), state_.gradP);
+        addVector(gradP().primitiveField(), state.gradP);
     }
     if (needs & forceModel::needDivTau)
     {
         divTau = fvc::laplacian(nuEff, U) + fvc::div(nuEff*noAliasFvc::dev2GradUT(U));
-        addVector(divTau().primitiveField(), state_.divTau);
+        addVector(divTau().primitiveField(), state.divTau);
     }
     if ((needs & forceModel::needDUfDt) && DUDt)
     {
-        addVector(DUDt->primitiveField(), state_.DUfDt);
+        addVector(DUDt->primitiveField(), state.DUfDt);
     }
     if (needs & forceModel::needVorticity)
     {
         vorticity = noAliasFvc::curl(U);
-        addVector(vorticity().primitiveField(), state_.vorticity);
+        addVector(vorticity().primitiveField(), state.vorticity);
     }
 
     int width = 0;
@@ -72,7 +73,7 @@ void coarseDemCoupling::sampleFluid
         at += f.ncomp;
     }
     packedParticles_.resize(size_t(n)*width);
-    gather(k, packedCells_.data(), width, packedParticles_.data());
+    transfer_.gather(k, packedCells_.data(), width, packedParticles_.data());
     at = 0;
     for (const sampled& f : fields)
     {
@@ -80,29 +81,6 @@ void coarseDemCoupling::sampleFluid
             for (int d = 0; d < f.ncomp; ++d) f.particles[size_t(i)*f.ncomp + d] = packedParticles_[size_t(i)*width + at + d];
         at += f.ncomp;
     }
-}
-
-void coarseDemCoupling::gather(const cdc_kernels* k, const double* field, int ncomp, double* out)
-{
-    const label n = particles_.size(), ng = ghosts_.size();
-    buffer_.resize(size_t(n + ng)*ncomp);
-    demMesh_.check(cdc_gather(k, field, ncomp, buffer_.data()), "gather");
-    halo_.addToOwners(buffer_.data() + size_t(n)*ncomp, ncomp, buffer_.data());
-    std::copy(buffer_.begin(), buffer_.begin() + size_t(n)*ncomp, out);
-}
-
-void coarseDemCoupling::spread(const cdc_kernels* k, const double* local, int ncomp, double* out)
-{
-    withGhosts(local, ncomp, buffer_);
-    demMesh_.check(cdc_spread(k, buffer_.data(), ncomp, out), "spread");
-}
-
-void coarseDemCoupling::withGhosts(const double* local, int ncomp, std::vector<double>& all)
-{
-    const label n = particles_.size();
-    halo_.toGhosts(local, ncomp, ghostBuffer_);
-    all.assign(local, local + size_t(n)*ncomp);
-    all.insert(all.end(), ghostBuffer_.begin(), ghostBuffer_.end());
 }
 
 // The fluid's sources from the particles' forces, with the void-fraction kernels (src/core/exchange.c:
@@ -118,17 +96,17 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
     const bool smooth = voidFraction_.smoothsExchangeFields();
     const bool implicit = switches_.implicitDrag && !smooth;
     const cdc_kernels* k = exchangeKernels_->reaction();
-    withGhosts(K_.cdata(), 1, exchangeK_);
-    withGhosts(reinterpret_cast<const double*>(state_.v), 3, exchangeV_);
-    withGhosts(reinterpret_cast<const double*>(state_.Uf.cdata()), 3, exchangeUf_);
-    withGhosts(reinterpret_cast<const double*>(fReact_.cdata()), 3, exchangeF_);
+    transfer_.withGhosts(forces_->K().cdata(), 1, exchangeK_);
+    transfer_.withGhosts(reinterpret_cast<const double*>(forces_->state().v), 3, exchangeV_);
+    transfer_.withGhosts(reinterpret_cast<const double*>(forces_->state().Uf.cdata()), 3, exchangeUf_);
+    transfer_.withGhosts(reinterpret_cast<const double*>(forces_->fReact().cdata()), 3, exchangeF_);
     // the drag's fluid velocity came from other kernels than the reaction's: the difference explicit
     const bool correct = implicit && k != exchangeKernels_->sample();
     if (correct)
     {
         vectorField uKernel(n);
-        gather(k, reinterpret_cast<const double*>(U.primitiveField().cdata()), 3, reinterpret_cast<double*>(uKernel.data()));
-        withGhosts(reinterpret_cast<const double*>(uKernel.cdata()), 3, exchangeUk_);
+        transfer_.gather(k, reinterpret_cast<const double*>(U.primitiveField().cdata()), 3, reinterpret_cast<double*>(uKernel.data()));
+        transfer_.withGhosts(reinterpret_cast<const double*>(uKernel.cdata()), 3, exchangeUk_);
     }
     const cdc_exchange_in in =
     {

@@ -49,21 +49,25 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
     const scalar gMag = mag(fluid_.g);
     const vector up = gMag > 0 ? -fluid_.g/gMag : vector::zero;
     scalar weight = 0, carried = 0;
-    forAll(K_, i)
+    const particleFluidState& state = forces_->state();
+    const scalarField& K = forces_->K();
+    const vectorField& fReact = forces_->fReact();
+    const std::vector<double>& volume = forces_->volumes();
+    forAll(K, i)
     {
-        const vector f = particleForce(i);
-        fParticles += K_[i]*(state_.Uf[i] - state_.v[i]) + fReact_[i];
-        nonReacting += fOther_[i] - fReact_[i];
+        const vector f = forces_->force(i);
+        fParticles += K[i]*(state.Uf[i] - state.v[i]) + fReact[i];
+        nonReacting += forces_->fOther()[i] - fReact[i];
         forceScale_ += mag(f);
-        weight += (particles_.density[i] - fluid_.rho)*volume_[i]*gMag;
-        carried += (f & up) - fluid_.rho*volume_[i]*gMag;
+        weight += (particles_.density[i] - fluid_.rho)*volume[i]*gMag;
+        carried += (f & up) - fluid_.rho*volume[i]*gMag;
     }
     // this rank's sums; report() reduces them over the ranks once
     weightBuoyant_ += weight;
     weightCarried_ += carried;
     ++nWeightSamples_;
     scalar vp = 0;
-    for (const double v : volume_) vp += v;
+    for (const double v : volume) vp += v;
     solidVolumeParticles_ = returnReduce(vp, sumOp<scalar>());
     solidVolumeCells_ = gSum(alphaP.primitiveField()*mesh_.V());
     const vector fluidTotal = fluidMomentumSource(U);
@@ -81,16 +85,17 @@ void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
     const scalar dtParticle = switches_.implicitParticleDrag ? dem_->timestep() : dt;
     const label n = particles_.size();
     scalarField particleRatio(n);
-    forAll(particleRatio, i) particleRatio[i] = dtParticle*K_[i]/(particles_.density[i]*volume_[i]);
+    const scalarField& K = forces_->K();
+    forAll(particleRatio, i) particleRatio[i] = dtParticle*K[i]/(particles_.density[i]*forces_->volumes()[i]);
     explicitRange_.checkParticles(particleRatio, switches_.implicitParticleDrag, mesh_.time().timeName());
     if (switches_.implicitDrag)
     {
         explicitRange_.fluidImplicit();   // Ksl is implicit in the fluid momentum equation: no limit
         return;
     }
-    const scalarField Kr(K_/fluid_.rho);
+    const scalarField Kr(K/fluid_.rho);
     scalarField KslExplicit(mesh_.nCells(), 0);
-    spread(Kr.cdata(), 1, KslExplicit.data());
+    transfer_.spread(voidFraction_.kernels(), Kr.cdata(), 1, KslExplicit.data());
     explicitRange_.checkFluid(dt*KslExplicit/alpha.primitiveField(), dict_.name(), mesh_.time().timeName());
 }
 
@@ -112,7 +117,7 @@ void coarseDemCoupling::report(Ostream& os) const
             << solidVolumeAlpha_ << " (rel. err " << (solidVolumeParticles_ > 0
                ? mag(solidVolumeAlpha_ - solidVolumeParticles_)/solidVolumeParticles_ : 0) << ")";
     }
-    if (needs_ & forceModel::needDvDt) velocities_.report(os);
+    forces_->report(os);
     if (!switches_.implicitDrag)
     {
         os  << ", explicit fluid drag dt Ksl/alpha max " << explicitRange_.fluidRatio() << " ("

@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
     coarseDemCoupling, construction: the checked top-level entries of
-    constant/couplingProperties, the force models, the background kernels,
+    constant/couplingProperties, the background kernels,
     the output-only fields and the start-up summary line
     (doc/couplingProperties.md is the reference of every entry).
 \*---------------------------------------------------------------------------*/
@@ -41,54 +41,7 @@ void coarseDemCoupling::checkEntries()
     }
 }
 
-// forceModels: the models, what they need, and the combinations that count a force twice or miss one.
-wordList coarseDemCoupling::readForceModels()
-{
-    const wordList names(dict_.get<wordList>("forceModels"));
-    bool hasDrag = false, hasGradP = false;
-    wordList buoyant;
-    forAll(names, i)
-    {
-        forces_.append(forceModel::New(names[i], dict_));
-        const forceModel& fm = forces_.last();
-        needs_ |= fm.needs();
-        hasDrag = hasDrag || fm.isDrag();
-        hasGradP = hasGradP || fm.carriesPressureGradient();
-        if (fm.carriesBuoyancy()) buoyant.append(fm.name());
-    }
-    if (!hasDrag)
-    {
-        WarningInFunction << "no drag model in forceModels of " << dict_.name() << endl;
-    }
-    if (!modelB_ && names.size() && !hasGradP)
-    {
-        // Model A's fluid carries -alpha grad(p) (Zhang et al. 2023 eq. 15): the particles must get
-        // -V grad(p), or the dynamic pressure force leaves the fluid and reaches no particle.
-        FatalIOErrorInFunction(dict_)
-            << "forceModels in " << dict_.name() << " lacks gradPForce, which modelType A needs: the"
-            << " fluid equation has alpha grad(p), so the particles must get -V grad(p)" << nl
-            << "    (or modelType B with drag and Archimedes: the drag is then divided by the fluid"
-            << " fraction)" << exit(FatalIOError);
-    }
-    dragOverAlpha_ = modelB_ && !hasGradP;
-    if (dragOverAlpha_ && buoyant.empty() && mag(fluid_.g) > 0)
-    {
-        WarningInFunction
-            << "modelType B without gradPForce or Archimedes in " << dict_.name() << ": the particles"
-            << " get no buoyancy (rho_f V g); add Archimedes (drag / alpha_f carries the rest of the"
-            << " pressure gradient)" << endl;
-    }
-    if (buoyant.size() > 1)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "forceModels in " << dict_.name() << " has " << buoyant << ", which all carry the buoyancy:"
-            << " it would be counted twice (the pressure gradient holds the hydrostatic part)"
-            << exit(FatalIOError);
-    }
-    return names;
-}
-
-void coarseDemCoupling::printSummary(const wordList& names) const
+void coarseDemCoupling::printSummary() const
 {
     const word modelType(modelB_ ? "B" : "A");
     Info<< "coarseDemCoupling: model " << modelType << ", voidFractionModel " << voidFraction_.method()
@@ -96,7 +49,7 @@ void coarseDemCoupling::printSummary(const wordList& names) const
         << (voidFraction_.smoothsExchangeFields() ? " (alpha_p and the fluid's sources)" : "")
         << ", background fields " << exchangeKernels_->description().c_str()
         << ", drag on the fluid " << (switches_.implicitDrag ? "implicit" : "explicit") << ", on the particles "
-        << (switches_.implicitParticleDrag ? "every DEM step" : "held for the CFD step") << ", forces " << names
+        << (switches_.implicitParticleDrag ? "every DEM step" : "held for the CFD step") << ", forces " << forces_->names()
         << ", DEM step " << dem_->timestep() << " s x " << couplingInterval_;
     if (cgFactor_ != 1)
     {
