@@ -38,7 +38,6 @@ coarseDemCoupling::coarseDemCoupling
     voidFraction_(dict_, demMesh_),
     halo_(mesh),
     transfer_(demMesh_, halo_, particles_, ghosts_),
-    solidVolumeParticles_(0), solidVolumeCells_(0), momentumImbalance_(0), forceScale_(0),
     nParticles_(0),
     inventory_(mesh, dict_, switches_.allowParticleLoss),
     keepRestartForces_(false),
@@ -240,7 +239,7 @@ void coarseDemCoupling::setFluidFraction(volScalarField& alpha)
         a = (1 - w)*alpha.oldTime().primitiveField() + w*(1 - ap);
     }
     alpha.correctBoundaryConditions();
-    if (alphaRelaxationTime_ > 0) solidVolumeAlpha_ = gSum((1 - a)*mesh_.V());
+    if (alphaRelaxationTime_ > 0) balances_.solidVolumeAlpha = gSum((1 - a)*mesh_.V());
 }
 
 void coarseDemCoupling::write()

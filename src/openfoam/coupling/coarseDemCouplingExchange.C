@@ -23,11 +23,8 @@ void coarseDemCoupling::sampleFluid
     const cdc_kernels* k = exchangeKernels_->sample();
     particleFluidState& state = forces_->state();
     const label n = state.n;
-    // Every field the forces need, gathered in one pass over the kernels and one halo exchange:
-    // the fields side by side in one array of cells (each component's sum over a kernel is the
-    // same as gathered alone).
-    struct sampled { const double* cells; int ncomp; double* particles; };
-    std::vector<sampled> fields;
+    // Every field the forces need, gathered in one pass over the kernels and one halo exchange
+    std::vector<kernelTransfer::field> fields;
     auto addVector = [&](const vectorField& field, vectorField& out)
     {
         out.setSize(n);
@@ -61,26 +58,7 @@ void coarseDemCoupling::sampleFluid
         addVector(vorticity().primitiveField(), state.vorticity);
     }
 
-    int width = 0;
-    for (const sampled& f : fields) width += f.ncomp;
-    const label nCells = mesh_.nCells();
-    packedCells_.resize(size_t(nCells)*width);
-    int at = 0;
-    for (const sampled& f : fields)
-    {
-        for (label c = 0; c < nCells; ++c)
-            for (int d = 0; d < f.ncomp; ++d) packedCells_[size_t(c)*width + at + d] = f.cells[size_t(c)*f.ncomp + d];
-        at += f.ncomp;
-    }
-    packedParticles_.resize(size_t(n)*width);
-    transfer_.gather(k, packedCells_.data(), width, packedParticles_.data());
-    at = 0;
-    for (const sampled& f : fields)
-    {
-        for (label i = 0; i < n; ++i)
-            for (int d = 0; d < f.ncomp; ++d) f.particles[size_t(i)*f.ncomp + d] = packedParticles_[size_t(i)*width + at + d];
-        at += f.ncomp;
-    }
+    transfer_.gatherTogether(k, mesh_.nCells(), fields);
 }
 
 // The fluid's sources from the particles' forces, with the void-fraction kernels (src/core/exchange.c:
@@ -96,22 +74,24 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
     const bool smooth = voidFraction_.smoothsExchangeFields();
     const bool implicit = switches_.implicitDrag && !smooth;
     const cdc_kernels* k = exchangeKernels_->reaction();
-    transfer_.withGhosts(forces_->K().cdata(), 1, exchangeK_);
-    transfer_.withGhosts(reinterpret_cast<const double*>(forces_->state().v), 3, exchangeV_);
-    transfer_.withGhosts(reinterpret_cast<const double*>(forces_->state().Uf.cdata()), 3, exchangeUf_);
-    transfer_.withGhosts(reinterpret_cast<const double*>(forces_->fReact().cdata()), 3, exchangeF_);
+    // local particles' values followed by the ghosts'
+    std::vector<double> exchangeK, exchangeV, exchangeUf, exchangeUk, exchangeF;
+    transfer_.withGhosts(forces_->K().cdata(), 1, exchangeK);
+    transfer_.withGhosts(reinterpret_cast<const double*>(forces_->state().v), 3, exchangeV);
+    transfer_.withGhosts(reinterpret_cast<const double*>(forces_->state().Uf.cdata()), 3, exchangeUf);
+    transfer_.withGhosts(reinterpret_cast<const double*>(forces_->fReact().cdata()), 3, exchangeF);
     // the drag's fluid velocity came from other kernels than the reaction's: the difference explicit
     const bool correct = implicit && k != exchangeKernels_->sample();
     if (correct)
     {
         vectorField uKernel(n);
         transfer_.gather(k, reinterpret_cast<const double*>(U.primitiveField().cdata()), 3, reinterpret_cast<double*>(uKernel.data()));
-        transfer_.withGhosts(reinterpret_cast<const double*>(uKernel.cdata()), 3, exchangeUk_);
+        transfer_.withGhosts(reinterpret_cast<const double*>(uKernel.cdata()), 3, exchangeUk);
     }
     const cdc_exchange_in in =
     {
-        int32_t(exchangeK_.size()), exchangeK_.data(), exchangeV_.data(), exchangeUf_.data(),
-        correct ? exchangeUk_.data() : nullptr, exchangeF_.data(), fluid_.rho,
+        int32_t(exchangeK.size()), exchangeK.data(), exchangeV.data(), exchangeUf.data(),
+        correct ? exchangeUk.data() : nullptr, exchangeF.data(), fluid_.rho,
         implicit ? CDC_EXCHANGE_IMPLICIT : CDC_EXCHANGE_EXPLICIT
     };
     double* f = reinterpret_cast<double*>(fFluid.primitiveFieldRef().data());
@@ -130,13 +110,13 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
             return;
         }
         // K of the local particles and ghosts, already gathered above: no second halo exchange
-        smoothedK_.assign(exchangeK_.begin(), exchangeK_.end());
-        for (double& x : smoothedK_) x /= fluid_.rho;
+        std::vector<double> smoothedK(exchangeK.begin(), exchangeK.end());
+        for (double& x : smoothedK) x /= fluid_.rho;
         scalarField& ksl = Ksl.primitiveFieldRef();
-        demMesh_.check(cdc_spread(k, smoothedK_.data(), 1, ksl.data()), "spread");
+        demMesh_.check(cdc_spread(k, smoothedK.data(), 1, ksl.data()), "spread");
         // fFluid and Ksl smoothed together, side by side per cell
         const label nCells = mesh_.nCells();
-        std::vector<double>& both = smoothedSources_;
+        std::vector<double> both;
         both.resize(size_t(nCells)*4);
         for (label c = 0; c < nCells; ++c)
         {

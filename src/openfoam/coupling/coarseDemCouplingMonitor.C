@@ -31,9 +31,12 @@ void coarseDemCoupling::compareExchangeInTime(const volVectorField& U, bool segm
         exchange_.skip();
         return;
     }
-    // forceScale_: sum |f| of the last coupling, whose forces the segment used (recordBalances
-    // replaces it later in this step)
-    exchange_.compare(returnReduce(dem_->couplingImpulse(), sumOp<vector>()), fluidMomentumSource(U), forceScale_);
+    // the forceScale of the last coupling, whose forces the segment used (recordBalances replaces it
+    // later in this step)
+    exchange_.compare
+    (
+        returnReduce(dem_->couplingImpulse(), sumOp<vector>()), fluidMomentumSource(U), balances_.forceScale
+    );
 }
 
 // Balances for the Coupling line: solid volume in cells vs particles; the momentum the fluid gets (at
@@ -42,7 +45,7 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
 {
     timers_.start(stageTimers::monitor);
     vector fParticles(Zero);
-    forceScale_ = 0;
+    balances_.forceScale = 0;
     vector nonReacting(Zero);
     // the particles' buoyant weight and the part of it the fluid's force carries (p holds the
     // hydrostatic part: Model A's -V grad p and Model B's Archimedes both carry rho_f V g)
@@ -58,24 +61,24 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
         const vector f = forces_->force(i);
         fParticles += K[i]*(state.Uf[i] - state.v[i]) + fReact[i];
         nonReacting += forces_->fOther()[i] - fReact[i];
-        forceScale_ += mag(f);
+        balances_.forceScale += mag(f);
         weight += (particles_.density[i] - fluid_.rho)*volume[i]*gMag;
         carried += (f & up) - fluid_.rho*volume[i]*gMag;
     }
     // this rank's sums; report() reduces them over the ranks once
-    weightBuoyant_ += weight;
-    weightCarried_ += carried;
-    ++nWeightSamples_;
+    balances_.weightBuoyant += weight;
+    balances_.weightCarried += carried;
+    ++balances_.nWeightSamples;
     scalar vp = 0;
     for (const double v : volume) vp += v;
-    solidVolumeParticles_ = returnReduce(vp, sumOp<scalar>());
-    solidVolumeCells_ = gSum(alphaP.primitiveField()*mesh_.V());
+    balances_.solidVolumeParticles = returnReduce(vp, sumOp<scalar>());
+    balances_.solidVolumeCells = gSum(alphaP.primitiveField()*mesh_.V());
     const vector fluidTotal = fluidMomentumSource(U);
     reduce(fParticles, sumOp<vector>());
     reduce(nonReacting, sumOp<vector>());
-    reduce(forceScale_, sumOp<scalar>());
+    reduce(balances_.forceScale, sumOp<scalar>());
     exchange_.setNonReacting(nonReacting);
-    momentumImbalance_ = mag(fluidTotal + fParticles);
+    balances_.momentumImbalance = mag(fluidTotal + fParticles);
     timers_.stop();
 }
 
@@ -101,12 +104,12 @@ void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
 
 void coarseDemCoupling::report(Ostream& os) const
 {
-    const scalar volErr = solidVolumeParticles_ > 0
-        ? mag(solidVolumeCells_ - solidVolumeParticles_)/solidVolumeParticles_ : 0;
+    const scalar volErr = balances_.solidVolumeParticles > 0
+        ? mag(balances_.solidVolumeCells - balances_.solidVolumeParticles)/balances_.solidVolumeParticles : 0;
     os  << "Coupling: particles " << nParticles_
-        << ", solid volume particles " << solidVolumeParticles_ << " cells " << solidVolumeCells_
+        << ", solid volume particles " << balances_.solidVolumeParticles << " cells " << balances_.solidVolumeCells
         << " (rel. err " << volErr << ")"
-        << ", momentum imbalance " << momentumImbalance_ << " N of " << forceScale_ << " N"
+        << ", momentum imbalance " << balances_.momentumImbalance << " N of " << balances_.forceScale << " N"
         << ", limiter moved " << returnReduce(voidFraction_.movedVolume(), sumOp<scalar>()) << " m3 in "
         << returnReduce(voidFraction_.nLimitedCells(), sumOp<label>()) << " cells"
         << ", drag dt K/m max " << explicitRange_.particleRatio() << " (" << explicitRange_.nParticlesBeyond()
@@ -114,8 +117,8 @@ void coarseDemCoupling::report(Ostream& os) const
     if (alphaRelaxationTime_ > 0)
     {
         os  << ", alpha relaxed over " << alphaRelaxationTime_ << " s: solid volume 1 - alpha "
-            << solidVolumeAlpha_ << " (rel. err " << (solidVolumeParticles_ > 0
-               ? mag(solidVolumeAlpha_ - solidVolumeParticles_)/solidVolumeParticles_ : 0) << ")";
+            << balances_.solidVolumeAlpha << " (rel. err " << (balances_.solidVolumeParticles > 0
+               ? mag(balances_.solidVolumeAlpha - balances_.solidVolumeParticles)/balances_.solidVolumeParticles : 0) << ")";
     }
     forces_->report(os);
     if (!switches_.implicitDrag)
@@ -126,24 +129,7 @@ void coarseDemCoupling::report(Ostream& os) const
     }
     coverage_.report(os);
     os  << endl;
-    const scalar weightBuoyant = returnReduce(weightBuoyant_, sumOp<scalar>());
-    if (weightBuoyant > 0)
-    {
-        // averaged over the couplings since the last report; in a fluidized bed the fluid carries
-        // the whole buoyant weight (the pressure drop equals it), and what it does not carry rests
-        // on the walls through the contacts (or accelerates the particles)
-        const scalar share = returnReduce(weightCarried_, sumOp<scalar>())/weightBuoyant;
-        os  << "Weight: the fluid carries " << 100*share << " % of the particles' buoyant weight (mean of "
-            << nWeightSamples_ << " couplings since the last report)";
-        if (share < 0.97)
-        {
-            os  << "; " << 100*(1 - share) << " % rests on walls through the contacts (a packed or"
-                << " jammed bed, particles on a distributor) or accelerates the particles";
-        }
-        os  << endl;
-    }
-    weightBuoyant_ = weightCarried_ = 0;
-    nWeightSamples_ = 0;
+    balances_.reportWeight(os);
     if (inventory_.open() || inventory_.nChanged() > 0) inventory_.report(os);
     exchange_.report(os);
 
