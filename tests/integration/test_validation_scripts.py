@@ -764,8 +764,10 @@ with tempfile.TemporaryDirectory() as tmp:
     os.makedirs(os.path.join(tmp, "6.0"))
     open(os.path.join(tmp, "6.0", "dem.restart.step"), "w").write("1000000\n")
     os.makedirs(os.path.join(tmp, "post"))
+    os.makedirs(os.path.join(tmp, "DEM"))     # the run's DEM step, read from its script
+    open(os.path.join(tmp, "DEM", "materials.liggghts"), "w").write("timestep        1e-5\n")
     with open(os.path.join(tmp, "post", "wallForce.txt"), "w") as f, open(os.path.join(tmp, "post", "bedHeight.txt"), "w") as g:
-        for k in range(-200, 1):      # steps before the 6.0 s write: 5.88 ... 6.0 s
+        for k in range(-200, 1):      # steps before the 6.0 s write, 500 of 1e-5 s apart: 5.0 ... 6.0 s
             step = 1000000 + 100 * k * 5
             f.write("%d %s\n" % (step, " ".join(["%.6g" % (0.01 * muller_pressure.buoyant_weight())] + ["0"] * 9)))
             g.write("%d 0.02\n" % step)
