@@ -124,7 +124,7 @@ void coarseDemCoupling::couple
     timers_.start(stageTimers::forces);       // the fluid sampled at the particles, their forces
     forces_->setParticles(particles_, cgFactor_, mesh_.time().timeName());
     sampleFluid(U, alpha, p, nuEff, DUDt);
-    forces_->evaluate(particles_, fluid_, modelB_, mesh_.time().deltaTValue());
+    forces_->evaluate(particles_, mesh_.time().deltaTValue());
     timers_.stop();
     pushForces();                              // to the DEM for its next segment
 

@@ -116,8 +116,7 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
         demMesh_.check(cdc_spread(k, smoothedK.data(), 1, ksl.data()), "spread");
         // fFluid and Ksl smoothed together, side by side per cell
         const label nCells = mesh_.nCells();
-        std::vector<double> both;
-        both.resize(size_t(nCells)*4);
+        std::vector<double> both(size_t(nCells)*4);
         for (label c = 0; c < nCells; ++c)
         {
             for (int d = 0; d < 3; ++d) both[size_t(c)*4 + d] = f[size_t(c)*3 + d];

@@ -12,7 +12,9 @@ namespace Foam
 // forceModels: the models, what they need, and the combinations that count a force twice or miss one.
 particleForces::particleForces(const dictionary& dict, bool modelB, const fluidProperties& fluid)
 :
-    names_(dict.get<wordList>("forceModels"))
+    names_(dict.get<wordList>("forceModels")),
+    fluid_(fluid),
+    modelB_(modelB)
 {
     bool hasDrag = false, hasGradP = false;
     wordList buoyant;
@@ -80,7 +82,7 @@ void particleForces::setParticles(const demParticles& particles, scalar cgFactor
     state_.volume = volume_.data();
 }
 
-void particleForces::evaluate(const demParticles& particles, const fluidProperties& fluid, bool modelB, scalar dt)
+void particleForces::evaluate(const demParticles& particles, scalar dt)
 {
     const label n = state_.n;
     if (needs_ & forceModel::needDvDt)
@@ -101,15 +103,15 @@ void particleForces::evaluate(const demParticles& particles, const fluidProperti
         if (fm.isDrag())
         {
             Ki = 0;
-            fm.dragCoefficient(state_, fluid, Ki);
+            fm.dragCoefficient(state_, fluid_, Ki);
             K_ += Ki;
         }
         else
         {
             fi = Zero;
-            fm.addForce(state_, fluid, fi);
+            fm.addForce(state_, fluid_, fi);
             fOther_ += fi;
-            if (fm.reactsOnFluid(modelB)) fReact_ += fi;
+            if (fm.reactsOnFluid(modelB_)) fReact_ += fi;
         }
     }
     // Model B without gradPForce (Zhou et al. 2010, CFDEM's modelType B): the fluid carries -grad(p)
