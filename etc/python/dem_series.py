@@ -121,7 +121,10 @@ def read_post_series(run, name, ncols, demdt, anchor=(0, 0.0)):
     run keeps each earlier start's file as post/NAME.part<N>.txt (etc/RunFunctions keepPostParts),
     since LIGGGHTS starts the file anew: the parts in order, then NAME.txt, each step from the last
     file that has it (a continued start recomputes the steps after its restart). The time of a step
-    from anchor (a DEM step and its time: dem_time_anchor) and the DEM step demdt."""
+    from anchor (a DEM step and its time: dem_time_anchor) and the DEM step demdt (ValueError when
+    demdt is None: the run's step is not known)."""
+    if demdt is None:
+        raise ValueError("the run's DEM step is not known (no timestep line in its DEM script)")
     post = os.path.join(run, "post")
     parts = sorted(glob.glob(os.path.join(post, name + ".part*.txt")),
                    key=lambda p: int(re.search(r"part(\d+)\.txt$", p).group(1)))
