@@ -71,7 +71,7 @@ void coarseDemCoupling::sampleFluid
 void coarseDemCoupling::fluidSources(const volVectorField& U)
 {
     const label n = particles_.size();
-    const bool smooth = voidFraction_.smoothsExchangeFields();
+    const bool smooth = voidFraction_.smoothing().smoothsExchangeFields();
     const bool implicit = switches_.implicitDrag && !smooth;
     const cdc_kernels* k = exchangeKernels_->reaction();
     // local particles' values followed by the ghosts'
@@ -106,7 +106,7 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
         // diffusion in flux form keeps sum(f V), so the balance holds as spread
         if (!switches_.implicitDrag)
         {
-            voidFraction_.smoothLikeAlpha(f, 3);
+            voidFraction_.smoothing().smoothLikeAlpha(f, 3);
             return;
         }
         // K of the local particles and ghosts, already gathered above: no second halo exchange
@@ -122,7 +122,7 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
             for (int d = 0; d < 3; ++d) both[size_t(c)*4 + d] = f[size_t(c)*3 + d];
             both[size_t(c)*4 + 3] = ksl[c];
         }
-        voidFraction_.smoothLikeAlpha(both.data(), 4);
+        voidFraction_.smoothing().smoothLikeAlpha(both.data(), 4);
         for (label c = 0; c < nCells; ++c)
         {
             for (int d = 0; d < 3; ++d) f[size_t(c)*3 + d] = both[size_t(c)*4 + d];

@@ -46,7 +46,7 @@ void coarseDemCoupling::printSummary() const
     const word modelType(modelB_ ? "B" : "A");
     Info<< "coarseDemCoupling: model " << modelType << ", voidFractionModel " << voidFraction_.method()
         << ", smoothing " << voidFraction_.smoothingName()
-        << (voidFraction_.smoothsExchangeFields() ? " (alpha_p and the fluid's sources)" : "")
+        << (voidFraction_.smoothing().smoothsExchangeFields() ? " (alpha_p and the fluid's sources)" : "")
         << ", background fields " << exchangeKernels_->description().c_str()
         << ", drag on the fluid " << (switches_.implicitDrag ? "implicit" : "explicit") << ", on the particles "
         << (switches_.implicitParticleDrag ? "every DEM step" : "held for the CFD step") << ", forces " << forces_->names()

@@ -67,7 +67,7 @@ void kernelCoverage::checkDragCoverage
     const word& time
 )
 {
-    if (vf.smoothingName() == "off" || vf.smoothsExchangeFields())
+    if (vf.smoothingName() == "off" || vf.smoothing().smoothsExchangeFields())
     {
         return;
     }

@@ -17,7 +17,7 @@ particleOutputFields::particleOutputFields
     const word t = mesh.time().timeName();
     if (dict.lookupOrDefault<Switch>("solidVelocityField", false))
     {
-        if (!vf.canSmoothLikeAlpha())
+        if (!vf.smoothing().canSmoothLikeAlpha())
         {
             WarningInFunction
                 << "solidVelocityField with smoothingModel sizeAwareDiffusion: alphaPUs is not smoothed"
@@ -94,7 +94,7 @@ void particleOutputFields::update
     {
         double* aUs = reinterpret_cast<double*>(alphaPUs_().primitiveFieldRef().data());
         spread(voidFraction_.kernels(), qd, 3, aUs);
-        voidFraction_.smoothLikeAlpha(aUs, 3);   // as alphaP, so alphaPUs/alphaP is a velocity
+        voidFraction_.smoothing().smoothLikeAlpha(aUs, 3);   // as alphaP, so alphaPUs/alphaP is a velocity
         alphaPUs_().correctBoundaryConditions();
     }
     if (!binKernels_) return;

@@ -28,7 +28,7 @@ void adviseOnSetup(const dictionary& dict, const voidFraction& vf, const scalarF
     // smoothExchangeFields true -6.11 %
     if
     (
-        vf.method() == "centre" && vf.smoothingName() == "diffusion" && !vf.smoothsExchangeFields()
+        vf.method() == "centre" && vf.smoothingName() == "diffusion" && !vf.smoothing().smoothsExchangeFields()
      && dx < coarseCellsPerDiameter*dMax
     )
     {

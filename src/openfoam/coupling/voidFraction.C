@@ -128,15 +128,9 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
     method_(dict.get<word>("voidFractionModel")),
     params_(readKernelParams(dict, method_, method_, wordList(), recommendedKernelParams(method_))),
     kernels_(nullptr),
-    smoothing_(smoothing::off),
-    diffusion_(),
-    bandwidthOverD_(0),
-    classRatio_(0),
     alphaMin_(dict.get<scalar>("alphaMin")),
-    smoothExchange_(false),
     movedVolume_(0),
     nLimitedCells_(0),
-    nClasses_(0),
     alphaPSeconds_(0)
 {
     const cdc_status st = cdc_kernels_create(mesh.context(), method_.c_str(), &params_, &kernels_);
@@ -153,80 +147,7 @@ voidFraction::voidFraction(const dictionary& dict, const coarseDemMesh& mesh)
             << " is invalid: must be in (0, 1) (e.g. 0.3 for spheres)" << exit(FatalIOError);
     }
 
-    readSmoothing(dict);
-}
-
-// The CG solves' relative residual of a diffusion smoothing (<model>Props tolerance), checked; the
-// core's default when the entry is absent.
-static scalar readDiffusionTolerance(const dictionary& dict, const dictionary& props, const word& propsName)
-{
-    const scalar tol = props.lookupOrDefault<scalar>("tolerance", CDC_DIFFUSION_DEFAULT_TOLERANCE);
-    if (!(tol > 0 && tol < 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "entry tolerance " << tol << " in " << dict.name() << "/" << propsName
-            << " is invalid: must be > 0 and < 1 (the CG solves' relative residual)"
-            << exit(FatalIOError);
-    }
-    return tol;
-}
-
-// smoothingModel and its <model>Props: which smoothing, its parameters, checked
-void voidFraction::readSmoothing(const dictionary& dict)
-{
-    const word sm = dict.lookupOrDefault<word>("smoothingModel", "off");
-    if (sm == "diffusion")
-    {
-        smoothing_ = smoothing::diffusion;
-        const dictionary& d = dict.subDict("diffusionProps");
-        checkPropsKeys(d, {"bandwidth", "nSteps", "tolerance", "DRule", "particleDiameter", "smoothExchangeFields"});
-        diffusion_.bandwidth = d.get<scalar>("bandwidth");
-        diffusion_.n_steps = d.lookupOrDefault<label>("nSteps", 4);
-        diffusion_.tolerance = readDiffusionTolerance(dict, d, "diffusionProps");
-        diffusion_.d_rule = d.lookupOrDefault<Switch>("DRule", false) ? 1 : 0;
-        diffusion_.particle_diameter = d.lookupOrDefault<scalar>("particleDiameter", 0);
-        smoothExchange_ = d.lookupOrDefault<Switch>("smoothExchangeFields", false);
-        if (!(diffusion_.bandwidth > 0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "entry bandwidth " << diffusion_.bandwidth << " in " << dict.name()
-                << "/diffusionProps is invalid: must be > 0 (metres; b = 6 d is recommended)"
-                << exit(FatalIOError);
-        }
-    }
-    else if (sm == "sizeAwareDiffusion")
-    {
-        smoothing_ = smoothing::sizeAware;
-        const dictionary& d = dict.subDict("sizeAwareDiffusionProps");
-        checkPropsKeys(d, {"bandwidthOverD", "classRatio", "nSteps", "tolerance"});
-        bandwidthOverD_ = d.get<scalar>("bandwidthOverD");
-        classRatio_ = d.lookupOrDefault<scalar>("classRatio", 1.1);
-        diffusion_.n_steps = d.lookupOrDefault<label>("nSteps", 4);
-        diffusion_.tolerance = readDiffusionTolerance(dict, d, "sizeAwareDiffusionProps");
-        if (!(bandwidthOverD_ > 0) || !(classRatio_ > 1))
-        {
-            FatalIOErrorInFunction(dict)
-                << "entries bandwidthOverD " << bandwidthOverD_ << " and classRatio " << classRatio_
-                << " in " << dict.name() << "/sizeAwareDiffusionProps are invalid: need > 0 and > 1"
-                << exit(FatalIOError);
-        }
-    }
-    if (sm != "off" && smoothing_ == smoothing::off)
-    {
-        FatalIOErrorInFunction(dict)
-            << "unknown smoothingModel " << sm << " in " << dict.name() << nl
-            << "    valid smoothing models: off, diffusion, sizeAwareDiffusion" << exit(FatalIOError);
-    }
-    if
-    (
-        smoothing_ != smoothing::diffusion && dict.isDict("diffusionProps")
-     && dict.subDict("diffusionProps").lookupOrDefault<Switch>("smoothExchangeFields", false)
-    )
-    {
-        WarningInFunction
-            << "smoothExchangeFields in " << dict.name() << "/diffusionProps acts with smoothingModel"
-            << " diffusion only; smoothingModel is " << sm << ": ignored" << endl;
-    }
+    smoothing_ = smoothingModel::New(dict, mesh);
 }
 
 voidFraction::~voidFraction()
@@ -234,29 +155,11 @@ voidFraction::~voidFraction()
     cdc_kernels_destroy(kernels_);
 }
 
-word voidFraction::smoothingName() const
-{
-    switch (smoothing_)
-    {
-        case smoothing::diffusion: return "diffusion";
-        case smoothing::sizeAware: return "sizeAwareDiffusion";
-        default: return "off";
-    }
-}
-
-void voidFraction::smoothLikeAlpha(double* field, int ncomp) const
-{
-    if (smoothing_ != smoothing::diffusion) return;
-    // the components together: the same values as one by one, in fewer passes over the mesh
-    mesh_.check(cdc_diffuse_fields(mesh_.context(), &diffusion_, field, ncomp), "diffusion smoothing");
-}
-
 void voidFraction::update
 (
     const cdc_particles& p, const cdc_particles& ghosts, const particleHalo& halo, scalarField& alphaP
 )
 {
-    cdc_context* ctx = mesh_.context();
     buildKernels(mesh_, kernels_, p, ghosts, halo, "void fraction (" + method_ + ")");
     double* a = alphaP.data();
     const auto t0 = std::chrono::steady_clock::now();
@@ -270,32 +173,10 @@ void voidFraction::update
         radii_[i] = r;
         volumes_[i] = 4.0/3.0*constant::mathematical::pi*r*r*r;
     }
-    switch (smoothing_)
-    {
-        case smoothing::off:
-            mesh_.check(cdc_spread(kernels_, volumes_.data(), 1, a), "alpha_p");
-            break;
-        case smoothing::diffusion:
-            mesh_.check(cdc_spread(kernels_, volumes_.data(), 1, a), "alpha_p");
-            mesh_.check(cdc_diffuse(ctx, &diffusion_, a), "diffusion smoothing");
-            break;
-        case smoothing::sizeAware:
-        {
-            int nc = 0;
-            // the classes need every particle that has a kernel here: local ones and ghosts
-            cdc_particles all = {int32_t(n), nullptr, radii_.data(), nullptr, nullptr};
-            mesh_.check
-            (
-                cdc_alpha_p_diffused_by_size(ctx, kernels_, &all, bandwidthOverD_, classRatio_, &diffusion_, a, &nc),
-                "size-aware diffusion smoothing"
-            );
-            nClasses_ = nc;
-            break;
-        }
-    }
+    smoothing_->alphaP(kernels_, volumes_, radii_, a);
     double moved = 0;
     int32_t nLimited = 0;
-    mesh_.check(cdc_limit_packing(ctx, 1.0 - alphaMin_, 200, a, &moved, &nLimited), "packing limiter");
+    mesh_.check(cdc_limit_packing(mesh_.context(), 1.0 - alphaMin_, 200, a, &moved, &nLimited), "packing limiter");
     alphaPSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     movedVolume_ = moved;
     nLimitedCells_ = nLimited;
