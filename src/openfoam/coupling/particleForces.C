@@ -100,19 +100,13 @@ void particleForces::evaluate(const demParticles& particles, scalar dt)
     vectorField fi(n);
     for (const forceModel& fm : models_)
     {
-        if (fm.isDrag())
-        {
-            Ki = 0;
-            fm.dragCoefficient(state_, fluid_, Ki);
-            K_ += Ki;
-        }
-        else
-        {
-            fi = Zero;
-            fm.addForce(state_, fluid_, fi);
-            fOther_ += fi;
-            if (fm.reactsOnFluid(modelB_)) fReact_ += fi;
-        }
+        Ki = 0;
+        fi = Zero;
+        fm.force(state_, fluid_, Ki, fi);
+        K_ += Ki;
+        fOther_ += fi;
+        // the drag's reaction goes to the fluid through K; of the explicit parts, those that react
+        if (fm.reactsOnFluid(modelB_)) fReact_ += fi;
     }
     // Model B without gradPForce (Zhou et al. 2010, CFDEM's modelType B): the fluid carries -grad(p)
     // and every reaction; the particles get the dynamic pressure gradient's share through the drag

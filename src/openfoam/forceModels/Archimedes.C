@@ -18,7 +18,7 @@ public:
     bool reactsOnFluid(bool modelB) const override { return modelB; }
     bool carriesBuoyancy() const override { return true; }
 
-    void addForce(const particleFluidState& s, const fluidProperties& fl, vectorField& f) const override
+    void force(const particleFluidState& s, const fluidProperties& fl, scalarField&, vectorField& f) const override
     {
         for (label i = 0; i < s.n; ++i) f[i] -= fl.rho*s.volume[i]*fl.g;
     }

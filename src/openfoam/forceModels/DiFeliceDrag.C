@@ -51,7 +51,7 @@ public:
     bool isDrag() const override { return true; }
     wordList propsKeys() const override { return {"reynoldsNumber"}; }
 
-    void dragCoefficient(const particleFluidState& s, const fluidProperties& fl, scalarField& K) const override
+    void force(const particleFluidState& s, const fluidProperties& fl, scalarField& K, vectorField&) const override
     {
         const scalar pi = constant::mathematical::pi;
         for (label i = 0; i < s.n; ++i)

@@ -31,7 +31,7 @@ public:
     KochHillDrag(const word& name, const dictionary& props) : forceModel(name, props) {}
     bool isDrag() const override { return true; }
 
-    void dragCoefficient(const particleFluidState& s, const fluidProperties& fl, scalarField& K) const override
+    void force(const particleFluidState& s, const fluidProperties& fl, scalarField& K, vectorField&) const override
     {
         for (label i = 0; i < s.n; ++i)
         {

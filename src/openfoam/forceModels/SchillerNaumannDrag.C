@@ -21,7 +21,7 @@ public:
     SchillerNaumannDrag(const word& name, const dictionary& props) : forceModel(name, props) {}
     bool isDrag() const override { return true; }
 
-    void dragCoefficient(const particleFluidState& s, const fluidProperties& fl, scalarField& K) const override
+    void force(const particleFluidState& s, const fluidProperties& fl, scalarField& K, vectorField&) const override
     {
         const scalar pi = constant::mathematical::pi;
         for (label i = 0; i < s.n; ++i)

@@ -35,16 +35,6 @@ Foam::autoPtr<Foam::forceModel> Foam::forceModel::New(const word& name, const di
     return model;
 }
 
-void Foam::forceModel::dragCoefficient(const particleFluidState&, const fluidProperties&, scalarField&) const
-{
-    FatalErrorInFunction << name_ << " is not a drag model" << abort(FatalError);
-}
-
-void Foam::forceModel::addForce(const particleFluidState&, const fluidProperties&, vectorField&) const
-{
-    FatalErrorInFunction << name_ << " is a drag model" << abort(FatalError);
-}
-
 void Foam::forceModel::warnOutOfRange
 (
     const word& key, const string& quantity, scalar value, const string& range

@@ -19,7 +19,7 @@ public:
     bool carriesPressureGradient() const override { return true; }
     bool carriesBuoyancy() const override { return true; }   // p holds the hydrostatic part
 
-    void addForce(const particleFluidState& s, const fluidProperties& fl, vectorField& f) const override
+    void force(const particleFluidState& s, const fluidProperties& fl, scalarField&, vectorField& f) const override
     {
         for (label i = 0; i < s.n; ++i) f[i] -= s.volume[i]*fl.rho*s.gradP[i];
     }

@@ -46,7 +46,7 @@ public:
     {}
     int needs() const override { return needVorticity; }
 
-    void addForce(const particleFluidState& s, const fluidProperties& fl, vectorField& f) const override
+    void force(const particleFluidState& s, const fluidProperties& fl, scalarField&, vectorField& f) const override
     {
         const scalar pi = constant::mathematical::pi;
         const scalar mu = fl.rho*fl.nu;

@@ -27,7 +27,7 @@ public:
     int needs() const override { return needDUfDt | needDvDt; }
     wordList propsKeys() const override { return {"Cvm"}; }
 
-    void addForce(const particleFluidState& s, const fluidProperties& fl, vectorField& f) const override
+    void force(const particleFluidState& s, const fluidProperties& fl, scalarField&, vectorField& f) const override
     {
         for (label i = 0; i < s.n; ++i) f[i] += Cvm_*fl.rho*s.volume[i]*(s.DUfDt[i] - s.dvdt[i]);
     }

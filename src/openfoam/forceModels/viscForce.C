@@ -16,7 +16,7 @@ public:
     int needs() const override { return needDivTau; }
     bool reactsOnFluid(bool modelB) const override { return modelB; }
 
-    void addForce(const particleFluidState& s, const fluidProperties& fl, vectorField& f) const override
+    void force(const particleFluidState& s, const fluidProperties& fl, scalarField&, vectorField& f) const override
     {
         for (label i = 0; i < s.n; ++i) f[i] += s.volume[i]*fl.rho*s.divTau[i];
     }

@@ -81,8 +81,9 @@ int main(int argc, char *argv[])
         s.Uf[i] = U[i];
         s.vorticity[i] = w[i];
     }
+    scalarField K(n, 0);
     vectorField f(n, Zero);
-    model->addForce(s, fl, f);
+    model->force(s, fl, K, f);   // K stays 0: not a drag law
     std::cout.precision(12);
     for (label i = 0; i < n; ++i)
     {
