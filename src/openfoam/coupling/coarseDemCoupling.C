@@ -126,6 +126,10 @@ void coarseDemCoupling::couple
     sampleFluid(U, alpha, p, nuEff, DUDt);
     forces_->evaluate(particles_, mesh_.time().deltaTValue());
     timers_.stop();
+    timers_.start(stageTimers::monitor);
+    crossings_.update(particles_.id, cdc_kernels_hosts(voidFraction_.kernels()), forces_->state().Uf,
+                      forces_->state().v, mesh_.time().value());
+    timers_.stop();
     pushForces();                              // to the DEM for its next segment
 
     timers_.start(stageTimers::sources);

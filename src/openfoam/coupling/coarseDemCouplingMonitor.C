@@ -73,6 +73,7 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
     for (const double v : volume) vp += v;
     balances_.solidVolumeParticles = returnReduce(vp, sumOp<scalar>());
     balances_.solidVolumeCells = gSum(alphaP.primitiveField()*mesh_.V());
+    crossings_.limiter(returnReduce(voidFraction_.movedVolume(), sumOp<scalar>()), balances_.solidVolumeParticles);
     const vector fluidTotal = fluidMomentumSource(U);
     reduce(fParticles, sumOp<vector>());
     reduce(nonReacting, sumOp<vector>());
@@ -132,6 +133,7 @@ void coarseDemCoupling::report(Ostream& os) const
     balances_.reportWeight(os);
     if (inventory_.open() || inventory_.nChanged() > 0) inventory_.report(os);
     exchange_.report(os);
+    crossings_.report(os, voidFraction_.method(), mesh_.time().value());
 
     // particles reaching through the mesh boundary: a DEM wall's contact overlap (small depths), or a
     // particle leaving the mesh (large ones); counted here, at reports only (six locations each)
