@@ -14,12 +14,10 @@ void faceCrossings::update
 )
 {
     if (intervalStart_ < 0) intervalStart_ = time;
-    std::unordered_map<long long, track> seen;
-    seen.reserve(id.size());
+    ++nUpdates_;
     forAll(Uf, i)
     {
-        auto old = tracks_.find(id[i]);
-        track t = old == tracks_.end() ? track() : old->second;
+        track& t = tracks_[id[i]];   // a new particle: no host yet
         const int32_t host = hosts[i];
         if (t.host >= 0 && host >= 0 && host != t.host)
         {
@@ -39,21 +37,14 @@ void faceCrossings::update
                 }
             }
         }
-        if (host != t.host)
-        {
-            t.previousHost = t.host;
-            t.host = host;
-        }
-        else
-        {
-            t.previousHost = -1;   // a coupling in the same cell ends a back-and-forth run
-        }
+        // a coupling in the same cell ends a back-and-forth run
+        t.previousHost = host != t.host ? t.host : -1;
+        t.host = host;
         t.Uf = Uf[i];
         t.slip = Uf[i] - v[i];
         ++t.couplings;
-        seen.emplace(id[i], t);
+        t.lastUpdate = nUpdates_;
     }
-    tracks_.swap(seen);   // particles that left this rank or the DEM are forgotten
 }
 
 void faceCrossings::limiter(scalar moved, scalar solid)
@@ -135,7 +126,13 @@ void faceCrossings::report(Ostream& os, const word& method, scalar time)
     largestJumpTime_ = 0;
     nLimited_ = nLimitedMost_ = 0;
     limitedShare_ = 0;
-    for (auto& entry : tracks_) entry.second.couplings = entry.second.reversals = 0;
+    // particles that left this rank or the DEM are forgotten
+    for (auto it = tracks_.begin(); it != tracks_.end(); )
+    {
+        if (it->second.lastUpdate != nUpdates_) { it = tracks_.erase(it); continue; }
+        it->second.couplings = it->second.reversals = 0;
+        ++it;
+    }
     intervalStart_ = time;
 }
 
