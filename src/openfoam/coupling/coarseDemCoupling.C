@@ -39,7 +39,7 @@ coarseDemCoupling::coarseDemCoupling
     halo_(mesh),
     transfer_(demMesh_, halo_, particles_, ghosts_),
     nParticles_(0),
-    inventory_(mesh, dict_, switches_.allowParticleLoss),
+    diag_(mesh, dict_, switches_.allowParticleLoss),
     keepRestartForces_(false),
     alphaP
     (
@@ -92,7 +92,7 @@ void coarseDemCoupling::evolveDem()
 {
     timers_.start(stageTimers::dem);
     dem_->run(couplingInterval_);
-    exchange_.setSegment(couplingInterval_*dem_->timestep());
+    diag_.exchange.setSegment(couplingInterval_*dem_->timestep());
     timers_.stop();
 }
 
@@ -114,7 +114,7 @@ void coarseDemCoupling::couple
     // the particles that entered and left (the loss guard), and the momentum exchanged over the last
     // DEM segment unless particles entered or left in it
     timers_.start(stageTimers::monitor);
-    const bool segmentChanged = inventory_.update(particles_);
+    const bool segmentChanged = diag_.inventory.update(particles_);
     timers_.stop();
     compareExchangeInTime(U, segmentChanged);
     const cdc_particles cp = coreParticles();  // NaN positions and bad radii are caught by the core
@@ -127,13 +127,13 @@ void coarseDemCoupling::couple
     forces_->evaluate(particles_, mesh_.time().deltaTValue());
     timers_.stop();
     timers_.start(stageTimers::monitor);
-    crossings_.update(particles_.id, cdc_kernels_hosts(voidFraction_.kernels()), forces_->state().Uf,
+    diag_.crossings.update(particles_.id, cdc_kernels_hosts(voidFraction_.kernels()), forces_->state().Uf,
                       forces_->state().v, mesh_.time().value());
     timers_.stop();
     pushForces();                              // to the DEM for its next segment
 
     timers_.start(stageTimers::sources);
-    exchange_.setCfdStep(mesh_.time().deltaTValue());
+    diag_.exchange.setCfdStep(mesh_.time().deltaTValue());
     fluidSources(U);                           // Ksl, KslUs, fFluid with the same kernels
     Ksl.correctBoundaryConditions();
     KslUs.correctBoundaryConditions();
@@ -151,8 +151,8 @@ void coarseDemCoupling::couple
     {
         // a parcel filling a cell beyond the packing limit; dense cells the drag misses
         const word time = mesh_.time().timeName();
-        coverage_.checkParcelFill(voidFraction_, forces_->volumes(), particles_, mesh_.V(), cgFactor_, dict_.name(), time);
-        coverage_.checkDragCoverage(voidFraction_, exchangeKernels_->reaction(), alphaP, dict_.name(), time);
+        diag_.coverage.checkParcelFill(voidFraction_, forces_->volumes(), particles_, mesh_.V(), cgFactor_, dict_.name(), time);
+        diag_.coverage.checkDragCoverage(voidFraction_, exchangeKernels_->reaction(), alphaP, dict_.name(), time);
     }
 }
 
@@ -201,13 +201,13 @@ void coarseDemCoupling::pushForces()
     if (keepRestartForces_)
     {
         keepRestartForces_ = false;   // the balance line of this step describes forces not applied
-        exchange_.setPending(false);
+        diag_.exchange.setPending(false);
     }
     else
     {
         dem_->push(forces_->demForce());
         if (switches_.implicitParticleDrag) dem_->pushDrag(forces_->demDragK(), forces_->demDragUf());
-        exchange_.setPending(nCouplings_ > 1);
+        diag_.exchange.setPending(nCouplings_ > 1);
     }
     timers_.stop();
 }
@@ -243,13 +243,13 @@ void coarseDemCoupling::setFluidFraction(volScalarField& alpha)
         a = (1 - w)*alpha.oldTime().primitiveField() + w*(1 - ap);
     }
     alpha.correctBoundaryConditions();
-    if (alphaRelaxationTime_ > 0) balances_.solidVolumeAlpha = gSum((1 - a)*mesh_.V());
+    if (alphaRelaxationTime_ > 0) diag_.balances.solidVolumeAlpha = gSum((1 - a)*mesh_.V());
 }
 
 void coarseDemCoupling::write()
 {
     if (!mesh_.time().writeTime()) return;
-    inventory_.write(particles_);
+    diag_.inventory.write(particles_);
     if (switches_.demRestart)
     {
         const fileName dir = mesh_.time().globalPath()/mesh_.time().timeName();

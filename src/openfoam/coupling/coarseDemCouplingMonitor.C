@@ -25,17 +25,17 @@ void coarseDemCoupling::compareExchangeInTime(const volVectorField& U, bool segm
 {
     // before the exchange fields are replaced: U is the fluid's velocity after the step that used
     // them, and the DEM has just run the segment that used them
-    if (!exchange_.pending()) return;
+    if (!diag_.exchange.pending()) return;
     if (segmentChanged)
     {
-        exchange_.skip();
+        diag_.exchange.skip();
         return;
     }
     // the forceScale of the last coupling, whose forces the segment used (recordBalances replaces it
     // later in this step)
-    exchange_.compare
+    diag_.exchange.compare
     (
-        returnReduce(dem_->couplingImpulse(), sumOp<vector>()), fluidMomentumSource(U), balances_.forceScale
+        returnReduce(dem_->couplingImpulse(), sumOp<vector>()), fluidMomentumSource(U), diag_.balances.forceScale
     );
 }
 
@@ -45,7 +45,7 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
 {
     timers_.start(stageTimers::monitor);
     vector fParticles(Zero);
-    balances_.forceScale = 0;
+    diag_.balances.forceScale = 0;
     vector nonReacting(Zero);
     // the particles' buoyant weight and the part of it the fluid's force carries (p holds the
     // hydrostatic part: Model A's -V grad p and Model B's Archimedes both carry rho_f V g)
@@ -61,25 +61,25 @@ void coarseDemCoupling::recordBalances(const volVectorField& U)
         const vector f = forces_->force(i);
         fParticles += K[i]*(state.Uf[i] - state.v[i]) + fReact[i];
         nonReacting += forces_->fOther()[i] - fReact[i];
-        balances_.forceScale += mag(f);
+        diag_.balances.forceScale += mag(f);
         weight += (particles_.density[i] - fluid_.rho)*volume[i]*gMag;
         carried += (f & up) - fluid_.rho*volume[i]*gMag;
     }
     // this rank's sums; report() reduces them over the ranks once
-    balances_.weightBuoyant += weight;
-    balances_.weightCarried += carried;
-    ++balances_.nWeightSamples;
+    diag_.balances.weightBuoyant += weight;
+    diag_.balances.weightCarried += carried;
+    ++diag_.balances.nWeightSamples;
     scalar vp = 0;
     for (const double v : volume) vp += v;
-    balances_.solidVolumeParticles = returnReduce(vp, sumOp<scalar>());
-    balances_.solidVolumeCells = gSum(alphaP.primitiveField()*mesh_.V());
-    crossings_.limiter(returnReduce(voidFraction_.movedVolume(), sumOp<scalar>()), balances_.solidVolumeParticles);
+    diag_.balances.solidVolumeParticles = returnReduce(vp, sumOp<scalar>());
+    diag_.balances.solidVolumeCells = gSum(alphaP.primitiveField()*mesh_.V());
+    diag_.crossings.limiter(returnReduce(voidFraction_.movedVolume(), sumOp<scalar>()), diag_.balances.solidVolumeParticles);
     const vector fluidTotal = fluidMomentumSource(U);
     reduce(fParticles, sumOp<vector>());
     reduce(nonReacting, sumOp<vector>());
-    reduce(balances_.forceScale, sumOp<scalar>());
-    exchange_.setNonReacting(nonReacting);
-    balances_.momentumImbalance = mag(fluidTotal + fParticles);
+    reduce(diag_.balances.forceScale, sumOp<scalar>());
+    diag_.exchange.setNonReacting(nonReacting);
+    diag_.balances.momentumImbalance = mag(fluidTotal + fParticles);
     timers_.stop();
 }
 
@@ -91,49 +91,49 @@ void coarseDemCoupling::checkExplicitRange(const volScalarField& alpha)
     scalarField particleRatio(n);
     const scalarField& K = forces_->K();
     forAll(particleRatio, i) particleRatio[i] = dtParticle*K[i]/(particles_.density[i]*forces_->volumes()[i]);
-    explicitRange_.checkParticles(particleRatio, switches_.implicitParticleDrag, mesh_.time().timeName());
+    diag_.range.checkParticles(particleRatio, switches_.implicitParticleDrag, mesh_.time().timeName());
     if (switches_.implicitDrag)
     {
-        explicitRange_.fluidImplicit();   // Ksl is implicit in the fluid momentum equation: no limit
+        diag_.range.fluidImplicit();   // Ksl is implicit in the fluid momentum equation: no limit
         return;
     }
     const scalarField Kr(K/fluid_.rho);
     scalarField KslExplicit(mesh_.nCells(), 0);
     transfer_.spread(voidFraction_.kernels(), Kr.cdata(), 1, KslExplicit.data());
-    explicitRange_.checkFluid(dt*KslExplicit/alpha.primitiveField(), dict_.name(), mesh_.time().timeName());
+    diag_.range.checkFluid(dt*KslExplicit/alpha.primitiveField(), dict_.name(), mesh_.time().timeName());
 }
 
 void coarseDemCoupling::report(Ostream& os) const
 {
-    const scalar volErr = balances_.solidVolumeParticles > 0
-        ? mag(balances_.solidVolumeCells - balances_.solidVolumeParticles)/balances_.solidVolumeParticles : 0;
+    const scalar volErr = diag_.balances.solidVolumeParticles > 0
+        ? mag(diag_.balances.solidVolumeCells - diag_.balances.solidVolumeParticles)/diag_.balances.solidVolumeParticles : 0;
     os  << "Coupling: particles " << nParticles_
-        << ", solid volume particles " << balances_.solidVolumeParticles << " cells " << balances_.solidVolumeCells
+        << ", solid volume particles " << diag_.balances.solidVolumeParticles << " cells " << diag_.balances.solidVolumeCells
         << " (rel. err " << volErr << ")"
-        << ", momentum imbalance " << balances_.momentumImbalance << " N of " << balances_.forceScale << " N"
+        << ", momentum imbalance " << diag_.balances.momentumImbalance << " N of " << diag_.balances.forceScale << " N"
         << ", limiter moved " << returnReduce(voidFraction_.movedVolume(), sumOp<scalar>()) << " m3 in "
         << returnReduce(voidFraction_.nLimitedCells(), sumOp<label>()) << " cells"
-        << ", drag dt K/m max " << explicitRange_.particleRatio() << " (" << explicitRange_.nParticlesBeyond()
+        << ", drag dt K/m max " << diag_.range.particleRatio() << " (" << diag_.range.nParticlesBeyond()
         << " particles > 1)";
     if (alphaRelaxationTime_ > 0)
     {
         os  << ", alpha relaxed over " << alphaRelaxationTime_ << " s: solid volume 1 - alpha "
-            << balances_.solidVolumeAlpha << " (rel. err " << (balances_.solidVolumeParticles > 0
-               ? mag(balances_.solidVolumeAlpha - balances_.solidVolumeParticles)/balances_.solidVolumeParticles : 0) << ")";
+            << diag_.balances.solidVolumeAlpha << " (rel. err " << (diag_.balances.solidVolumeParticles > 0
+               ? mag(diag_.balances.solidVolumeAlpha - diag_.balances.solidVolumeParticles)/diag_.balances.solidVolumeParticles : 0) << ")";
     }
     forces_->report(os);
     if (!switches_.implicitDrag)
     {
-        os  << ", explicit fluid drag dt Ksl/alpha max " << explicitRange_.fluidRatio() << " ("
-            << explicitRange_.nCellsBeyond()
+        os  << ", explicit fluid drag dt Ksl/alpha max " << diag_.range.fluidRatio() << " ("
+            << diag_.range.nCellsBeyond()
             << " cells > 1)";
     }
-    coverage_.report(os);
+    diag_.coverage.report(os);
     os  << endl;
-    balances_.reportWeight(os);
-    if (inventory_.open() || inventory_.nChanged() > 0) inventory_.report(os);
-    exchange_.report(os);
-    crossings_.report(os, voidFraction_.method(), mesh_.time().value());
+    diag_.balances.reportWeight(os);
+    if (diag_.inventory.open() || diag_.inventory.nChanged() > 0) diag_.inventory.report(os);
+    diag_.exchange.report(os);
+    diag_.crossings.report(os, voidFraction_.method(), mesh_.time().value());
 
     // particles reaching through the mesh boundary: a DEM wall's contact overlap (small depths), or a
     // particle leaving the mesh (large ones); counted here, at reports only (six locations each)
