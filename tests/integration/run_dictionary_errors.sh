@@ -13,7 +13,7 @@ cp -r "$top/tutorials/ErgunTest" "$base"
  sed -i 's/^endTime .*/endTime 0.001;/' system/controlDict && blockMesh > log.blockMesh 2>&1) ||
     { echo "FAIL: dictionary errors: could not prepare the base case"; echo "0 passed, 1 failed"; exit 1; }
 
-pass=0; fail=0
+. "$here/result.sh"   # result ok|fail, npass/nfail, finish
 # run_case DIR 'sed expression on constant/couplingProperties' ['extra shell on the case'] [RANKS]: a copy
 # of the base case in DIR with the edit and the extra shell applied, run by coarseDemFoam (serially, or
 # with RANKS 2 decomposed on 2 ranks) into DIR/log; returns the solver's exit status
@@ -38,11 +38,11 @@ check() {
     local rc=$?
     # LIGGGHTS reports its own errors in log.liggghts (its screen output is off)
     if [ $rc -ne 0 ] && cat "$c/log" "$c/log.liggghts" 2>/dev/null | grep -qF -- "$expect"; then
-        echo "PASS: dictionary error '$name' stops with: $expect"; pass=$((pass+1))
+        result ok "dictionary error '$name' stops with: $expect"
     else
         echo "FAIL: dictionary error '$name' (exit $rc) did not stop with: $expect"
         grep -A3 "FATAL" "$c/log" | head -6 | sed 's/^/    /'
-        fail=$((fail+1))
+        nfail=$((nfail + 1))
     fi
 }
 
@@ -52,10 +52,10 @@ check_runs() {
     run_case "$c" "$edit" "$extra"
     local rc=$?
     if [ $rc -eq 0 ] && grep -q "^End" "$c/log"; then
-        echo "PASS: valid setting '$name' runs to the end"; pass=$((pass+1))
+        result ok "valid setting '$name' runs to the end"
     else
         echo "FAIL: valid setting '$name' (exit $rc) did not run to the end"; tail -4 "$c/log" | sed 's/^/    /'
-        fail=$((fail+1))
+        nfail=$((nfail + 1))
     fi
 }
 
@@ -66,10 +66,10 @@ check_says() {
     run_case "$c" "$edit" "$extra"
     local rc=$?
     if [ $rc -eq 0 ] && grep -q "^End" "$c/log" && grep -qF -- "$expect" "$c/log"; then
-        echo "PASS: $what '$name' runs and says: $expect"; pass=$((pass+1))
+        result ok "$what '$name' runs and says: $expect"
     else
         echo "FAIL: $what '$name' (exit $rc) did not run and say: $expect"; tail -4 "$c/log" | sed 's/^/    /'
-        fail=$((fail+1))
+        nfail=$((nfail + 1))
     fi
 }
 # check_warns NAME 'sed expression' 'expected text' ['extra shell']: a setting that has no effect
@@ -82,9 +82,9 @@ check_quiet() {
     run_case "$c" "$edit" "$extra"
     local rc=$?
     if [ $rc -eq 0 ] && grep -q "^End" "$c/log" && ! grep -qF -- "$unexpected" "$c/log"; then
-        echo "PASS: valid setting '$name' runs without: $unexpected"; pass=$((pass+1))
+        result ok "valid setting '$name' runs without: $unexpected"
     else
-        echo "FAIL: valid setting '$name' (exit $rc) did not run without: $unexpected"; fail=$((fail+1))
+        result fail "valid setting '$name' (exit $rc) did not run without: $unexpected"
     fi
 }
 
@@ -108,9 +108,9 @@ for c in reaction_background reaction_background_np2; do
             }
             exit !(force > 0 && imb / force < 1e-12 && vol < 1e-12) }'; then
         echo "PASS: reaction through the background kernels ($c): balances to round-off: $(echo "$line" | grep -o 'rel. err [^)]*).*N of [^ ]* N')"
-        pass=$((pass+1))
+        npass=$((npass + 1))
     else
-        echo "FAIL: reaction through the background kernels ($c): the End line's balances: ${line:-none}"; fail=$((fail+1))
+        result fail "reaction through the background kernels ($c): the End line's balances: ${line:-none}"
     fi
 done
 # 0 where the method's default is not 0 (twoGrid searchFactor 3, gaussian cutoffFactor 2, the background
@@ -187,9 +187,9 @@ species_case="$work/binned_species_fields"
 last="$species_case/$(cd "$species_case" 2>/dev/null && ls -d [0-9]* | grep -E '^[0-9.e+-]+$' | sort -g | tail -1)"
 if [ -n "$last" ] && [ -f "$last/alphaPBinned.type1" ] &&
    cmp -s <(sed -n '/internalField/,$p' "$last/alphaPBinned") <(sed -n '/internalField/,$p' "$last/alphaPBinned.type1"); then
-    echo "PASS: binnedSpeciesFields: $(basename "$last")/alphaPBinned.type1 equals alphaPBinned (one DEM type)"; pass=$((pass+1))
+    echo "PASS: binnedSpeciesFields: $(basename "$last")/alphaPBinned.type1 equals alphaPBinned (one DEM type)"; npass=$((npass + 1))
 else
-    echo "FAIL: binnedSpeciesFields: no alphaPBinned.type1 equal to alphaPBinned in $last"; fail=$((fail+1))
+    result fail "binnedSpeciesFields: no alphaPBinned.type1 equal to alphaPBinned in $last"
 fi
 check gradP_and_Archimedes 's/GidaspowDrag gradPForce/GidaspowDrag gradPForce Archimedes/' "counted twice"
 check dem_script_missing 's|^demScript .*|demScript "DEM/nothere.liggghts";|' "DEM/nothere.liggghts\" not found"
@@ -299,18 +299,18 @@ check_quiet drag_in_background_kernels "$centre_diffusion; s/^backgroundFields .
 # below the warning's share the count is reported at write times; with the drag smoothed alike, not
 if grep -q "dense cells without drag [0-9]* of [1-9][0-9]* at t = " "$work/drag_covers_dense_cells/log"; then
     echo "PASS: centre + diffusion reports its dense cells without drag: $(grep -o "dense cells without drag [0-9]* of [0-9]* at t = [0-9.e-]*" "$work/drag_covers_dense_cells/log" | tail -1)"
-    pass=$((pass+1))
+    npass=$((npass + 1))
 else
-    echo "FAIL: centre + diffusion did not report its dense cells without drag"; fail=$((fail+1))
+    result fail "centre + diffusion did not report its dense cells without drag"
 fi
 # with the drag through the expanded kernels on the half-size mesh: counted, and none without drag
 if grep -q "dense cells without drag 0 of [1-9][0-9]* at t = " "$work/drag_in_background_kernels/log"; then
     echo "PASS: centre + diffusion with reactionKernel background on the half-size mesh: $(grep -o "dense cells without drag [0-9]* of [0-9]* at t = [0-9.e-]*" "$work/drag_in_background_kernels/log" | tail -1)"
-    pass=$((pass+1))
+    npass=$((npass + 1))
 else
     echo "FAIL: centre + diffusion with reactionKernel background did not report 0 dense cells without drag:" \
          "$(grep -o "dense cells without drag [0-9]* of [0-9]*" "$work/drag_in_background_kernels/log" | tail -1)"
-    fail=$((fail+1))
+    nfail=$((nfail + 1))
 fi
 check_warns deltaT_replaced_said 's/^couplingInterval .*/couplingInterval 125;/' \
     "it replaces deltaT 0.001 of"
@@ -322,16 +322,16 @@ check_says courant_counted "fixed step" 's/^couplingInterval .*/couplingInterval
 n_warned=$(grep -c "Courant number .* > 1 at t = .* take a smaller couplingInterval" "$work/courant_counted/log")
 if [ "$n_warned" = 1 ] && grep -q "above 1 in 0 of 2 CFD steps" "$work/deltaT_replaced_said/log"; then
     echo "PASS: a Courant number above 1 with a fixed step warned once (not at every step), none counted below 1"
-    pass=$((pass+1))
+    npass=$((npass + 1))
 else
     echo "FAIL: a Courant number above 1 with a fixed step warned $n_warned times (once expected), or the" \
-         "run below 1 did not count 0 of 2 steps"; fail=$((fail+1))
+         "run below 1 did not count 0 of 2 steps"; nfail=$((nfail + 1))
 fi
 # a serial run ends without OpenFOAM's "Finalizing MPI, but was initialized elsewhere" warning
 if grep -q "Finalizing MPI" "$work/deltaT_replaced_said/log"; then
-    echo "FAIL: serial run warns 'Finalizing MPI' at its end"; fail=$((fail+1))
+    result fail "serial run warns 'Finalizing MPI' at its end"
 else
-    echo "PASS: serial run ends without the 'Finalizing MPI' warning"; pass=$((pass+1))
+    result ok "serial run ends without the 'Finalizing MPI' warning"
 fi
 
 # on 2 ranks every rank's error names the file: the other ranks get couplingProperties from the
@@ -353,12 +353,12 @@ check_np2() {
     if [ $rc -ne 0 ] && grep -q "^\[0\].*constant/couplingProperties" "$c/log" &&
        grep -q "^\[1\].*constant/couplingProperties" "$c/log" && ! grep -q IOstream "$work/$1"_np2_*/log; then
         echo "PASS: dictionary error '$name' on 2 ranks: both ranks name constant/couplingProperties (run $try)"
-        pass=$((pass+1))
+        npass=$((npass + 1))
     else
         echo "FAIL: dictionary error '$name' on 2 ranks (exit $rc): not both ranks named constant/couplingProperties" \
              "in $try runs ($(cat "$work/$1"_np2_*/log | grep -c IOstream) lines name IOstream)"
         grep -A2 "FATAL" "$c/log" | head -8 | sed 's/^/    /'
-        fail=$((fail+1))
+        nfail=$((nfail + 1))
     fi
 }
 check_np2 misspelt_props 's/bigParticleProps /bigparticleProps /'
@@ -377,11 +377,10 @@ run_case "$c" "$centre_diffusion" "$half_mesh" 2
 rc=$?
 serial_count=$(grep -o '[0-9]* of the [0-9]* dense cells' "$work/drag_misses_dense_cells/log" | head -1)
 if [ $rc -eq 0 ] && [ -n "$serial_count" ] && grep -qF "$serial_count" "$c/log"; then
-    echo "PASS: 2 ranks count the serial run's dense cells without drag ($serial_count)"; pass=$((pass+1))
+    result ok "2 ranks count the serial run's dense cells without drag ($serial_count)"
 else
     echo "FAIL: 2 ranks (exit $rc) did not count the serial run's dense cells without drag ('$serial_count'):" \
-         "$(grep -o '[0-9]* of the [0-9]* dense cells' "$c/log" | head -1)"; fail=$((fail+1))
+         "$(grep -o '[0-9]* of the [0-9]* dense cells' "$c/log" | head -1)"; nfail=$((nfail + 1))
 fi
 
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish

@@ -6,14 +6,14 @@
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
+. "$here/result.sh"   # result ok|fail, results_from, finish
 work=$(mktemp -d /tmp/coarsedem-dist.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 pd="$top/tutorials/particleDistribution"
-make -s -C "$pd" > "$work/make.log" 2>&1 || { echo "FAIL: distribution via OpenFOAM: build of the standalone program"; exit 1; }
+make -s -C "$pd" > "$work/make.log" 2>&1 || { result fail "distribution via OpenFOAM: build of the standalone program"; finish; }
 "$pd/build/particle_distribution" -m 2 -o "$work/standalone" > "$work/standalone.log" 2>&1 ||
-    { echo "FAIL: distribution via OpenFOAM: standalone run"; exit 1; }
+    { result fail "distribution via OpenFOAM: standalone run"; finish; }
 
-status=0
 for method in bigParticle divided; do
     c="$work/case_$method"
     mkdir -p "$c/system" "$c/constant" "$c/0" "$c/DEM"
@@ -57,9 +57,10 @@ EOD
         echo "fix cfd all couple/coarse"
     } > "$c/DEM/in.liggghts"
     (cd "$c" && blockMesh > log.blockMesh 2>&1 && coarseDemFoam > log.coarseDemFoam 2>&1) ||
-        { echo "FAIL: distribution via OpenFOAM ($method): solver failed"; tail -5 "$c/log.coarseDemFoam"; status=1; continue; }
+        { result fail "distribution via OpenFOAM ($method): solver failed"; tail -5 "$c/log.coarseDemFoam"; continue; }
     name=$([ "$method" = bigParticle ] && echo bigParticle_n5 || echo "$method")
-    /usr/bin/python3 - "$c/1e-05/alphaP" "$work/standalone/field_${name}_M2.csv" "$method" <<'PYEOF' || status=1
+    results_from < <(/usr/bin/python3 - "$c/1e-05/alphaP" "$work/standalone/field_${name}_M2.csv" "$method" <<'PYEOF'
+
 import re, sys
 t = open(sys.argv[1]).read()
 m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(", t)
@@ -74,5 +75,7 @@ ok = worst <= 1e-12
 print(("PASS" if ok else "FAIL") + f": distribution via OpenFOAM ({sys.argv[3]}, M2): max |alpha_p(coarseDemFoam) - alpha_p(core)| = {worst:.2e} over {len(rows)*160} cells (limit 1e-12)")
 sys.exit(0 if ok else 1)
 PYEOF
+)
+    [ "$nread" -eq 1 ] || result fail "distribution via OpenFOAM ($method): the comparison printed no verdict"
 done
-exit $status
+finish

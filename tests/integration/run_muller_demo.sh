@@ -8,6 +8,7 @@
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
+. "$here/result.sh"   # result ok|fail, results_from, finish
 model=bigParticle; mesh=1; U=0.9
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -22,8 +23,8 @@ name="${model}_dx${mesh}_U${U}_demo"
 case_dir="$top/tutorials/fluidizedBedMuller"
 log="/tmp/coarsedem-muller-$name.log"
 "$case_dir/Allrun" -mode demo -model "$model" -mesh "$mesh" -U "$U" > "$log" 2>&1 ||
-    { echo "FAIL: Muller demo run $name (see $log)"; tail -5 "$log"; exit 1; }
-/usr/bin/python3 - "$case_dir/runs/$name" "$U" $cells <<'PYEOF'
+    { result fail "Muller demo run $name (see $log)"; tail -5 "$log"; finish; }
+results_from < <(/usr/bin/python3 - "$case_dir/runs/$name" "$U" $cells <<'PYEOF'
 import math, os, re, struct, sys
 run, U_in = sys.argv[1], float(sys.argv[2])
 nx, ny, nz = map(int, sys.argv[3:6])
@@ -119,7 +120,8 @@ print(("PASS" if ok else "FAIL") + f": {tag}: compared with {len(want)} MR data 
 status |= not ok
 sys.exit(status)
 PYEOF
-py=$?
+)
+[ "$nread" -gt 0 ] || result fail "Muller demo $name: the checks printed no verdict"
 # -continue: with the case files the run started with it continues (here: at its end already, so it
 # only re-makes the profiles), after a write cut short by a stop (made here: a later time with the
 # velocity of the first rank only and a DEM restart without its .step) is moved aside (without that,
@@ -134,17 +136,17 @@ if "$case_dir/Allrun" -mode demo -model "$model" -mesh "$mesh" -U "$U" -continue
    grep -q "continuing runs/$name" "$log.continue" && grep -q "write time 9.99 .*cut short by a stop" "$log.continue" &&
    [ ! -e "$fields/9.99" ] && [ -f "$run_dir/incomplete/${fields#"$run_dir"}/9.99/U" ] && [ -d "$fields/$last_t" ] &&
    [ "$(find "$run_dir/incomplete" -mindepth 1 -maxdepth 2 -name '[0-9]*' | sed 's|.*/||' | sort -u)" = 9.99 ]; then
-    echo "PASS: $tag: -continue with the same case files continues from the last complete write ($last_t), a write cut short moved aside"
+    result ok "$tag: -continue with the same case files continues from the last complete write ($last_t), a write cut short moved aside"
 else
-    echo "FAIL: $tag: -continue with the same case files did not continue from its last complete write (see $log.continue)"; py=1
+    result fail "$tag: -continue with the same case files did not continue from its last complete write (see $log.continue)"
 fi
 cp "$run_dir/constant/couplingProperties" "$log.cp"
 echo "// edited" >> "$run_dir/constant/couplingProperties"
 if ! "$case_dir/Allrun" -mode demo -model "$model" -mesh "$mesh" -U "$U" -continue > "$log.refused" 2>&1 &&
    grep -q "constant/couplingProperties" "$log.refused" && grep -q "cannot continue" "$log.refused"; then
-    echo "PASS: $tag: -continue with a changed case file refuses, naming constant/couplingProperties"
+    result ok "$tag: -continue with a changed case file refuses, naming constant/couplingProperties"
 else
-    echo "FAIL: $tag: -continue with a changed case file did not refuse naming it (see $log.refused)"; py=1
+    result fail "$tag: -continue with a changed case file did not refuse naming it (see $log.refused)"
 fi
 cp "$log.cp" "$run_dir/constant/couplingProperties"
 # -continue on other ranks than the run's: refused (the DEM restart and fields are per decomposition)
@@ -152,8 +154,8 @@ ran=$(awk 'NF >= 2 {n = $2} END {print n}' "$run_dir/wall_seconds.txt")
 other=$((3 - ran))
 if ! "$case_dir/Allrun" -mode demo -model "$model" -mesh "$mesh" -U "$U" -continue -np "$other" > "$log.ranks" 2>&1 &&
    grep -q "cannot continue on $other rank(s): it ran on $ran" "$log.ranks"; then
-    echo "PASS: $tag: -continue on $other rank(s) of a run made on $ran refuses, naming both"
+    result ok "$tag: -continue on $other rank(s) of a run made on $ran refuses, naming both"
 else
-    echo "FAIL: $tag: -continue on $other rank(s) of a run made on $ran did not refuse (see $log.ranks)"; py=1
+    result fail "$tag: -continue on $other rank(s) of a run made on $ran did not refuse (see $log.ranks)"
 fi
-exit $py
+finish

@@ -11,8 +11,7 @@ top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
 work=$(mktemp -d /tmp/coarsedem-par.XXXXXX)
 trap 'rm -rf "$work"' EXIT
-pass=0; fail=0
-result() { if [ "$1" = 0 ]; then echo "PASS: $2"; pass=$((pass+1)); else echo "FAIL: $2"; fail=$((fail+1)); fi; }
+. "$here/result.sh"   # result ok|fail, results_from, finish
 
 for np in 1 2; do
     cp -r "$top/tutorials/ErgunTest" "$work/ergun$np" && "$work/ergun$np/Allclean"
@@ -29,7 +28,7 @@ sed -i 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/^method .*/method hie
     "$work/ergun4/system/decomposeParDict"
 sed -i 's/^processors .*/processors      2 2 1/' "$work/ergun4/DEM/in.liggghts"
 "$work/ergun4/Allrun" -np 4 0.2 > "$work/ergun4.log" 2>&1
-/usr/bin/python3 - "$work" <<'PYEOF'
+results_from < <(/usr/bin/python3 - "$work" <<'PYEOF'
 import re, sys, os
 w = sys.argv[1]
 def field(path):
@@ -58,10 +57,14 @@ print(("PASS" if ok else "FAIL") + f": settlingTest np 2 vs serial: max |v diffe
 status |= not ok
 sys.exit(status)
 PYEOF
-py=$?
+)
+[ "$nread" -eq 5 ] || result fail "the comparison printed $nread of its 5 checks"
 for run in ergun1 ergun2 ergun4 settling1 settling2; do
     err=$(grep -h "^End: Coupling" "$work/$run"/log.coarseDemFoam* 2>/dev/null | head -1 | sed 's/.*rel. err \([^)]*\)).*/\1/')
-    /usr/bin/python3 -c "import sys; sys.exit(0 if float('$err') <= 1e-12 else 1)" 2>/dev/null
-    result $? "${run%[0-9]} np ${run##*[a-z]}: solid volume conserved (rel. err $err)"
+    if /usr/bin/python3 -c "import sys; sys.exit(0 if float('$err') <= 1e-12 else 1)" 2>/dev/null; then
+        result ok "${run%[0-9]} np ${run##*[a-z]}: solid volume conserved (rel. err $err)"
+    else
+        result fail "${run%[0-9]} np ${run##*[a-z]}: solid volume not conserved (rel. err $err)"
+    fi
 done
-exit $(( fail > 0 || py != 0 ))
+finish

@@ -16,18 +16,17 @@ tut="$top/tutorials/liquidFluidizedBed"
 log=$(mktemp /tmp/coarsedem-smallbed.XXXXXX)
 trap 'rm -f "$log"' EXIT
 "$tut/Allrun" -species small -mode short -U 0.015 -width 5 -method divided > "$log" 2>&1
-pass=0; fail=0
+. "$here/result.sh"   # result ok|fail, npass/nfail, finish
 while IFS= read -r line; do
     case "$line" in
         "FAIL: "*"bed voidage"*) echo "KNOWN (issue 41, not counted): ${line#FAIL: }" ;;
-        PASS:*) echo "PASS: small species: ${line#PASS: }"; pass=$((pass + 1)) ;;
-        FAIL:*) echo "FAIL: small species: ${line#FAIL: }"; fail=$((fail + 1)) ;;
+        PASS:*) result ok "small species: ${line#PASS: }" ;;
+        FAIL:*) result fail "small species: ${line#FAIL: }" ;;
     esac
 done < "$log"
 # the run and its checks must have happened: six counted checks (the seventh, the voidage, is KNOWN)
-if [ $((pass + fail)) -lt 6 ]; then
-    echo "FAIL: small species: the short run printed $((pass + fail)) counted checks, not 6:"; tail -15 "$log" | sed 's/^/    /'
-    fail=$((fail + 1))
+if [ $((npass + nfail)) -lt 6 ]; then
+    result fail "small species: the short run printed $((npass + nfail)) counted checks, not 6:"; tail -15 "$log" | sed 's/^/    /'
 fi
 rm -rf "$tut/runs/divided_A_U0.015_short_small_w5"
-echo "$pass passed, $fail failed"
+finish
