@@ -72,7 +72,7 @@ coarseDemCoupling::coarseDemCoupling
 {
     checkEntries();
     forces_.reset(new particleForces(dict_, modelB_, fluid_));
-    exchangeKernels_.reset(new exchangeKernels(dict_, demMesh_, voidFraction_));
+    averaging_ = fluidAveraging::New(dict_, demMesh_, voidFraction_);
     outputFields_.reset(new particleOutputFields(mesh, dict_, demMesh_, voidFraction_));
     dem_.reset(new liggghtsDem(mesh, dict_));
     checkDemUnits(dem_->lammps(), mesh, dict_);    // DEM box and particles against the mesh
@@ -152,7 +152,7 @@ void coarseDemCoupling::couple
         // a parcel filling a cell beyond the packing limit; dense cells the drag misses
         const word time = mesh_.time().timeName();
         diag_.coverage.checkParcelFill(voidFraction_, forces_->volumes(), particles_, mesh_.V(), cgFactor_, dict_.name(), time);
-        diag_.coverage.checkDragCoverage(voidFraction_, exchangeKernels_->reaction(), alphaP, dict_.name(), time);
+        diag_.coverage.checkDragCoverage(voidFraction_, averaging_->reaction(), alphaP, dict_.name(), time);
     }
 }
 
@@ -167,7 +167,7 @@ void coarseDemCoupling::pullParticles()
     reach_.resize(n);
     for (label i = 0; i < n; ++i)
     {
-        reach_[i] = exchangeKernels_->reach(particles_.radius[i]);
+        reach_[i] = averaging_->reach(particles_.radius[i]);
     }
     halo_.update(particles_, reach_, ghosts_);
     timers_.stop();
@@ -185,7 +185,7 @@ void coarseDemCoupling::updateVoidFraction(const cdc_particles& cp, const cdc_pa
     alphaP.correctBoundaryConditions();
     setFluidFraction(alpha);
     timers_.start(stageTimers::kernel);
-    exchangeKernels_->build(cp, cg, halo_);   // the background kernels, when they are kernels of their own
+    averaging_->build(cp, cg, halo_);   // the background kernels, when they are kernels of their own
     timers_.stop();
 }
 

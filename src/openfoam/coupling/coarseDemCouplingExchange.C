@@ -20,7 +20,7 @@ void coarseDemCoupling::sampleFluid
     const volScalarField& nuEff, const volVectorField* DUDt
 )
 {
-    const cdc_kernels* k = exchangeKernels_->sample();
+    const cdc_kernels* k = averaging_->sample();
     particleFluidState& state = forces_->state();
     const label n = state.n;
     // Every field the forces need, gathered in one pass over the kernels and one halo exchange
@@ -73,7 +73,7 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
     const label n = particles_.size();
     const bool smooth = voidFraction_.smoothing().smoothsExchangeFields();
     const bool implicit = switches_.implicitDrag && !smooth;
-    const cdc_kernels* k = exchangeKernels_->reaction();
+    const cdc_kernels* k = averaging_->reaction();
     // local particles' values followed by the ghosts'
     std::vector<double> exchangeK, exchangeV, exchangeUf, exchangeUk, exchangeF;
     transfer_.withGhosts(forces_->K().cdata(), 1, exchangeK);
@@ -81,7 +81,7 @@ void coarseDemCoupling::fluidSources(const volVectorField& U)
     transfer_.withGhosts(reinterpret_cast<const double*>(forces_->state().Uf.cdata()), 3, exchangeUf);
     transfer_.withGhosts(reinterpret_cast<const double*>(forces_->fReact().cdata()), 3, exchangeF);
     // the drag's fluid velocity came from other kernels than the reaction's: the difference explicit
-    const bool correct = implicit && k != exchangeKernels_->sample();
+    const bool correct = implicit && k != averaging_->sample();
     if (correct)
     {
         vectorField uKernel(n);

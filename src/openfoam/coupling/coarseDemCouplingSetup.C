@@ -47,7 +47,7 @@ void coarseDemCoupling::printSummary() const
     Info<< "coarseDemCoupling: model " << modelType << ", voidFractionModel " << voidFraction_.method()
         << ", smoothing " << voidFraction_.smoothingName()
         << (voidFraction_.smoothing().smoothsExchangeFields() ? " (alpha_p and the fluid's sources)" : "")
-        << ", background fields " << exchangeKernels_->description().c_str()
+        << ", background fields " << averaging_->description().c_str()
         << ", drag on the fluid " << (switches_.implicitDrag ? "implicit" : "explicit") << ", on the particles "
         << (switches_.implicitParticleDrag ? "every DEM step" : "held for the CFD step") << ", forces " << forces_->names()
         << ", DEM step " << dem_->timestep() << " s x " << couplingInterval_;

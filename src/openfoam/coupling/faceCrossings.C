@@ -60,8 +60,10 @@ void faceCrossings::report(Ostream& os, const word& method, scalar time)
     // this interval's particles held at a face; the one held longest (share of its couplings)
     label nHeld = 0;
     scalar held[3] = {-GREAT, 0, 0};   // share, id, couplings
-    for (const auto& [pid, t] : tracks_)
+    for (const auto& entry : tracks_)
     {
+        const long long pid = entry.first;
+        const track& t = entry.second;
         if (t.couplings < heldMinCouplings || t.reversals <= heldShare*t.couplings) continue;
         ++nHeld;
         heldIds_.insert(pid);
