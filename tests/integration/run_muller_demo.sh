@@ -121,7 +121,8 @@ status |= not ok
 sys.exit(status)
 PYEOF
 )
-[ "$nread" -gt 0 ] || result fail "Muller demo $name: the checks printed no verdict"
+# the checker exits non-zero on a failed check (counted) or on an error (a traceback after its PASS lines)
+wait $! || [ "$nfail" -gt 0 ] || result fail "Muller demo $name: the checker stopped with an error after $nread verdicts"
 # -continue: with the case files the run started with it continues (here: at its end already, so it
 # only re-makes the profiles), after a write cut short by a stop (made here: a later time with the
 # velocity of the first rank only and a DEM restart without its .step) is moved aside (without that,
