@@ -187,7 +187,9 @@ def main():
                 name = found[0]
                 run = os.path.join(here, "runs", name, "results")
                 r, header = read_row(os.path.join(run, "result.csv"))
-                d, dheader = read_row(os.path.join(run, "details.csv"))
+                d, dh = read_row(os.path.join(run, "details.csv"))
+                # runs of later commits may hold more detail columns: the union, in the order first seen
+                dheader = (dheader or []) + [k for k in dh if k not in (dheader or [])]
                 for k in SUMMARY_EXTRA:
                     r[k] = d.get(k, "")
                 r["window_s"] = window_s(d)
@@ -205,7 +207,7 @@ def main():
     suffix = "" if len(modes) > 1 else mode_suffix(mode)
     for fname, hdr, rr in (("summary%s.csv" % suffix, header, rows), ("details%s.csv" % suffix, dheader, details)):
         with open(os.path.join(res, fname), "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=hdr, lineterminator="\n")
+            w = csv.DictWriter(f, fieldnames=hdr, restval="", lineterminator="\n")
             w.writeheader()
             w.writerows(rr)
     for name in missing:
