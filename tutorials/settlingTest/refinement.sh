@@ -13,7 +13,7 @@ methods=${*:-divided centre}
 out="$here/results/refinement.csv"
 {
     echo "# command: tutorials/settlingTest/refinement.sh $methods"
-    echo "# commit: $(git -C "$here" rev-parse --short HEAD 2>/dev/null) ($(date -u +%Y-%m-%d))"
+    echo "# commit: $(git -C "${COARSEDEM_DIR:-$here}" rev-parse --short HEAD 2>/dev/null) ($(date -u +%Y-%m-%d))"
     echo "method,couplingInterval,cfd_step_s,alphaRelaxationTime_s,u_sim,u_ode,rel_err,late_max_dev"
 } > "$out"
 for m in $methods; do
