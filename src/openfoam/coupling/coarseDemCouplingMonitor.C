@@ -5,6 +5,7 @@
     range, and the Coupling / Exchange lines of the log.
 \*---------------------------------------------------------------------------*/
 #include "coarseDemCoupling.H"
+#include "largestOnRanks.H"
 
 #include <cmath>
 #include <string>
@@ -146,10 +147,10 @@ void coarseDemCoupling::report(Ostream& os) const
     const label nOutAll = returnReduce(label(nOut), sumOp<label>());
     if (nOutAll > 0)
     {
-        const scalar deepest = returnReduce(scalar(depth), maxOp<scalar>());
-        const scalar idDeepest = returnReduce(depth == deepest ? scalar(id) : scalar(-1), maxOp<scalar>());
-        os  << "Particles partly outside the mesh: " << nOutAll << ", the deepest reaches " << 100*deepest
-            << " % of its radius beyond it (particle " << std::to_string(std::llround(idDeepest)).c_str() << ")" << endl;
+        scalar deepest[2] = {scalar(depth), scalar(id)};
+        largestOnRanks(deepest);
+        os  << "Particles partly outside the mesh: " << nOutAll << ", the deepest reaches " << 100*deepest[0]
+            << " % of its radius beyond it (particle " << std::to_string(std::llround(deepest[1])).c_str() << ")" << endl;
     }
 }
 

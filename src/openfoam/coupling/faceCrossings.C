@@ -1,25 +1,11 @@
 #include "faceCrossings.H"
-#include "PstreamReduceOps.H"
+#include "largestOnRanks.H"
 
 #include <cmath>
 #include <string>
 
 namespace Foam
 {
-
-// The values of a record (a share or a jump, then its particle id and time) of the rank that holds the
-// largest first value; all ranks take part, and ties go to the highest rank, so that the three values
-// are one particle's
-template<std::size_t N>
-static void ofLargest(scalar (&rec)[N])
-{
-    const scalar best = returnReduce(rec[0], maxOp<scalar>());
-    const label owner = returnReduce(rec[0] == best ? Pstream::myProcNo() : label(-1), maxOp<label>());
-    for (std::size_t k = 0; k < N; ++k)
-    {
-        rec[k] = returnReduce(Pstream::myProcNo() == owner ? rec[k] : -GREAT, maxOp<scalar>());
-    }
-}
 
 void faceCrossings::update
 (
@@ -93,8 +79,8 @@ void faceCrossings::report(Ostream& os, const word& method, scalar time)
     reduce(nCrossings_[0], sumOp<label>());
     reduce(nReversals_[0], sumOp<label>());
     reduce(nJumps_[0], sumOp<label>());
-    ofLargest(largestJump_);
-    ofLargest(held_);
+    largestOnRanks(largestJump_);
+    largestOnRanks(held_);
     if (held_[0] > heldShare) heldLast_ = {held_[0], held_[1], held_[2]};
     const label runHeld = returnReduce(label(heldIds_.size()), sumOp<label>());
     for (label* n : {nCrossings_, nReversals_, nJumps_, nLimited_, nLimitedMost_}) n[1] += n[0];

@@ -1,6 +1,6 @@
 #include "kernelCoverage.H"
 #include "error.H"
-#include "PstreamReduceOps.H"
+#include "largestOnRanks.H"
 
 namespace Foam
 {
@@ -40,10 +40,12 @@ void kernelCoverage::checkParcelFill
             if (fill > worst) { worst = fill; worstId = label(particles.id[i]); }
         }
     }
-    const scalar worstAll = returnReduce(worst, maxOp<scalar>());
+    scalar rec[2] = {worst, scalar(worstId)};
+    largestOnRanks(rec);
+    const scalar worstAll = rec[0];
     const scalar limit = 1 - vf.alphaMin();
     if (worstAll <= limit) return;
-    const label id = returnReduce(worst == worstAll ? worstId : -1, maxOp<label>());
+    const label id = label(rec[1]);
     WarningInFunction
         << "particle " << id << " alone fills " << worstAll << " of a cell's volume at time "
         << time << ", beyond the packing limit 1 - alphaMin = " << limit << " ("
