@@ -6,7 +6,8 @@ WORK/<tol>/tutorials/fluidizedBedMuller/runs/RUN is the demo run of each toleran
 T, quantity (depth-averaged binned gas fraction and v_z) and MR height: the RMS over the profile's
 points of profile_T - profile_REF, beside the RMS spread of the reference profile about its mean (the
 size of the profile itself): OUT.csv. From each run's log, the solver's STAGE timer and its share of
-the timed stages: OUT_timers.csv.
+the timed stages, the time loop's wall seconds, the fluid's largest Courant number and the number of
+CFD steps above 1: OUT_timers.csv.
 """
 import csv
 import math
@@ -47,6 +48,23 @@ def stage_timer(path, stage):
     return float(m.group(1)), float(m.group(2))
 
 
+def loop_and_courant(path):
+    """(time loop wall s, largest Courant number, CFD steps above 1, CFD steps) from the solver log's
+    last Progress and 'Courant number since this start' lines."""
+    wall = courant = None
+    with open(os.path.join(path, "log.coarseDemFoam")) as f:
+        for text in f:
+            m = re.match(r"Progress: .* wall ([0-9.eE+-]+) s", text)
+            if m:
+                wall = float(m.group(1))
+            m = re.match(r"Courant number since this start: max ([0-9.eE+-]+), above 1 in ([0-9]+) of ([0-9]+) CFD", text)
+            if m:
+                courant = (float(m.group(1)), int(m.group(2)), int(m.group(3)))
+    if wall is None or courant is None:
+        sys.exit("tolerance_study.py: no Progress or Courant summary line in %s/log.coarseDemFoam" % path)
+    return (wall,) + courant
+
+
 def main(argv):
     if len(argv) < 6:
         sys.exit(__doc__)
@@ -64,10 +82,12 @@ def main(argv):
                     w.writerow([t, ref, q, z, "%.4g" % rms([x - y for x, y in zip(b, a)]), "%.4g" % spread])
     with open(out + "_timers.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["tolerance", stage + "_s", stage + "_share_pct"])
+        w.writerow(["tolerance", stage + "_s", stage + "_share_pct", "loop_wall_s", "courant_max",
+                    "cfd_steps_above_1", "cfd_steps"])
         for t in [ref] + others:
             s, share = stage_timer(run_dir(work, run, t), stage)
-            w.writerow([t, "%.2f" % s, "%.1f" % share])
+            wall, co, above, steps = loop_and_courant(run_dir(work, run, t))
+            w.writerow([t, "%.2f" % s, "%.1f" % share, "%.2f" % wall, "%.3g" % co, above, steps])
 
 
 if __name__ == "__main__":

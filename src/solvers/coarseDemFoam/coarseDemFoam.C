@@ -26,6 +26,7 @@ Description
 #include "wallFvPatch.H"
 #include "coarseDemCoupling.H"
 #include "noAliasFvc.H"
+#include "twoStepOscillation.H"
 
 #include <chrono>
 
