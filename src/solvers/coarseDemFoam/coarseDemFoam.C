@@ -26,7 +26,7 @@ Description
 #include "wallFvPatch.H"
 #include "coarseDemCoupling.H"
 #include "noAliasFvc.H"
-#include "twoStepOscillation.H"
+#include "growingOscillation.H"
 
 #include <chrono>
 

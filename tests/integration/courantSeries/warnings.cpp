@@ -1,15 +1,17 @@
-// warnings.cpp -- tests/integration/run_two_step_oscillation.sh: feeds a Courant series (CSV: t_s,
-// courant_max; '#' lines skipped) to the solver's twoStepOscillation and prints the times at which it
-// would warn, one per line, then "steps N".
-#include "twoStepOscillation.H"
+// warnings.cpp -- tests/integration/run_growing_oscillation.sh: feeds a Courant series (CSV: t_s,
+// courant_max; '#' lines skipped) to the solver's growingOscillation and prints the times at which it
+// would warn ("warn t ratio mean"), then "steps N". Argument: the warm-up in steps (the solver's 200
+// for a start from rest, 20 for a continued run); default 200.
+#include "growingOscillation.H"
 
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
-int main()
+int main(int argc, char** argv)
 {
-    twoStepOscillation watch;
+    growingOscillation watch(argc > 1 ? std::atoi(argv[1]) : 200);
     std::string line;
     long steps = 0;
     while (std::getline(std::cin, line))
