@@ -81,11 +81,13 @@ set_tolerance() { # tutorial-copy tol
             dem=$(awk '/^timestep/ {print $2}' "$1/DEM/materials.liggghts")
             [ -n "$dem" ] || { echo "bench/tolerance_study: no timestep line in $1/DEM/materials.liggghts" >&2; return 1; }
             n=$(steps_per "$2" "$dem" "CFD step $2 is not a whole number of DEM steps ($dem s)") || return 1
+            grep -q "^couplingInterval " "$1/constant/couplingProperties" ||
+                { echo "bench/tolerance_study: no couplingInterval line in $1/constant/couplingProperties" >&2; return 1; }
             sed -i "s|^couplingInterval .*|couplingInterval    $n;|" "$1/constant/couplingProperties" ;;
         correctors)
-            sed -i "s|^\( *nCorrectors  *\)[0-9]*;|\1$2;|" "$1/system/fvSolution"
-            grep -q "nCorrectors *$2;" "$1/system/fvSolution" ||
-                { echo "bench/tolerance_study: no nCorrectors entry in $1/system/fvSolution" >&2; return 1; } ;;
+            [ "$(grep -c "^ *nCorrectors  *[0-9]*;" "$1/system/fvSolution")" = 1 ] ||
+                { echo "bench/tolerance_study: not one nCorrectors entry in $1/system/fvSolution" >&2; return 1; }
+            sed -i "s|^\( *nCorrectors  *\)[0-9]*;|\1$2;|" "$1/system/fvSolution" ;;
     esac
 }
 work="$here/work/tolerance_$setting"
