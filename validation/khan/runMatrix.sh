@@ -27,7 +27,7 @@ while [ $# -gt 0 ]; do
         -np) np="$2"; shift 2 ;;
         -relax) relax="$2"; shift 2 ;;
         -compare) compare_only=1; shift ;;
-        -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
         *) echo "runMatrix.sh: unknown option '$1' (see -h)" >&2; exit 2 ;;
     esac
 done
