@@ -12,7 +12,8 @@
 #   made-up      after 300 steps at 0.2 +- 2 %: a growth to 5.8 times with no oscillation (no warning);
 #                the same growth swinging +-40 % from step to step, or with a period of four steps
 #                (warned within 45 steps); a long alternating growth (warned again, at least 100 steps
-#                apart); an alternating growth inside the warm-up (no warning)
+#                apart); an alternating growth inside the warm-up (no warning); a fluid at rest, then
+#                flowing (no floating-point trap: the solver traps 0/0 and stopped on it)
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$here/result.sh"
@@ -107,6 +108,18 @@ if [ "$n" -ge 2 ] && [ "$gaps" != none ] && [ "$gaps" -ge 100 ]; then
     result ok "growing oscillation: a long oscillation is warned about again, $n times, at least $gaps steps apart"
 else
     result fail "growing oscillation: a long oscillation: $n warnings, the closest ${gaps} steps apart (wanted >= 2, >= 100 apart)"
+fi
+# a fluid at rest (Courant number 0) for 250 steps, then flowing at 0.5 +- 30 % from step to step:
+# no trap, no warning (the warm-up starts when the fluid moves)
+/usr/bin/python3 -c "
+print('t_s,courant_max')
+for i in range(800):
+    print('%.3f,%.6g' % (i * 1e-3, 0 if i < 250 else 0.5 * (1 + 0.3 * (-1) ** i)))" > "$work/rest.csv"
+out=$(warnings "$work/rest.csv" 2>&1); rc=$?
+if [ $rc -eq 0 ] && [ "$(steps "$out")" = 800 ] && [ "$(count "$out")" -eq 0 ]; then
+    result ok "growing oscillation: a fluid at rest, then flowing: no floating-point trap, no warning from the detector"
+else
+    result fail "growing oscillation: a fluid at rest, then flowing: exit $rc, $(echo "$out" | head -2 | tr '\n' ' ')"
 fi
 made_up early 50 two
 out=$(warnings "$work/early.csv")

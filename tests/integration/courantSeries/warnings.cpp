@@ -1,7 +1,12 @@
 // warnings.cpp -- tests/integration/run_growing_oscillation.sh: feeds a Courant series (CSV: t_s,
 // courant_max; '#' lines skipped) to the solver's growingOscillation and prints the times at which it
 // would warn ("warn t ratio mean"), then "steps N". Argument: the warm-up in steps (the solver's 200
-// for a start from rest, 20 for a continued run); default 200.
+// for a start from rest, 20 for a continued run); default 200. Floating-point traps on, as in the solver.
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE   // feenableexcept
+#endif
+#include <fenv.h>
+
 #include "growingOscillation.H"
 
 #include <cstdio>
@@ -11,6 +16,8 @@
 
 int main(int argc, char** argv)
 {
+    // as OpenFOAM's FOAM_SIGFPE: an invalid operation or a division by zero stops the program
+    feenableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
     growingOscillation watch(argc > 1 ? std::atoi(argv[1]) : 200);
     std::string line;
     long steps = 0;
