@@ -32,16 +32,26 @@ def read_run(run):
     method = bed["method"] + ("+background" if bed["background"] == "on" else "")
     return dict(name=name, method=method, bed=bed, layers=layers, prof=prof, axis=axis, warnings=warnings,
                 share=float(bed["coupling_share"]), dem_per_fluid=float(bed["dem_per_fluid"]),
-                coupling_per_fluid=float(bed["coupling_per_fluid"]), case=(bed["mode"], "%g" % float(bed["young_pa"])))
+                coupling_per_fluid=float(bed["coupling_per_fluid"]), case=(window(bed), "%g" % float(bed["young_pa"])))
+
+
+def window(bed):
+    """'T0..T1' of bed.csv's tstart and tend, or the mode's name for a bed.csv without them."""
+    if "tstart" in bed and "tend" in bed:
+        return "%g..%g" % (float(bed["tstart"]), float(bed["tend"]))
+    return bed["mode"]
 
 
 def one_case(runs):
-    """The runs' (mode, Young's modulus), the same for all, or SystemExit naming the runs that differ."""
+    """The runs' (averaging window, Young's modulus), the same for all, or SystemExit naming the runs that
+    differ. The window, not the mode's name: the short and long modes share the start state and the
+    numerics, so a long run post-processed at 6 s (Allrun -endTime 6 -post) has the short mode's window
+    and compares with short runs; the demo and full modes differ in their windows as in their beds."""
     cases = {}
     for r in runs:
         cases.setdefault(r["case"], []).append(r["name"])
     if len(cases) > 1:
-        raise SystemExit("compare.py: the runs mix modes or contact stiffnesses, whose windows and contacts differ; "
-                         "compare one at a time:\n" + "\n".join("    mode %s, E = %s Pa: %s" % (m, e, ", ".join(n))
-                                                                 for (m, e), n in sorted(cases.items())))
+        raise SystemExit("compare.py: the runs mix averaging windows or contact stiffnesses, whose beds differ; "
+                         "compare one at a time:\n" + "\n".join("    window %s s, E = %s Pa: %s" % (w, e, ", ".join(n))
+                                                                 for (w, e), n in sorted(cases.items())))
     return next(iter(cases))

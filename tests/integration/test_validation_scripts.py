@@ -548,9 +548,27 @@ with tempfile.TemporaryDirectory() as tmp:
         refused = ""
     except SystemExit as e:
         refused = str(e)
-    check("mix modes or contact stiffnesses" in refused and "E = 100000 Pa" in refused and "E = 1e+06 Pa" in refused,
+    check("mix averaging windows or contact stiffnesses" in refused and "E = 100000 Pa" in refused and "E = 1e+06 Pa" in refused,
           "binary bed compare.py refuses runs of two contact stiffnesses, naming them: %r" % refused[:160])
     check(khan_runs.one_case([a]) == ("short", "100000"), "binary bed compare.py: one case passes")
+    # the window decides, not the mode's name: a long run post-processed at 6 s compares with short runs
+    def windowed(name, mode, tend):
+        d = fake_run(name, mode, "off", "100000")
+        bed = os.path.join(d, "results", "bed.csv")
+        head, row = open(bed).read().splitlines()
+        open(bed, "w").write(head + ",tstart,tend\n" + row + ",3,%s\n" % tend)
+        return khan_runs.read_run(d)
+    short6, long6, long13 = (windowed("divided_U0.015_short_E1e5", "short", 6), windowed("diffusion_U0.015_long_E1e5", "long", 6),
+                             windowed("bigParticle_U0.015_long_E1e5", "long", 13))
+    check(khan_runs.one_case([short6, long6]) == ("3..6", "100000"),
+          "binary bed compare.py: a short run and a long run stopped at 6 s share the window 3..6 s")
+    try:
+        khan_runs.one_case([short6, long13])
+        refused = ""
+    except SystemExit as e:
+        refused = str(e)
+    check("window 3..6 s" in refused and "window 3..13 s" in refused,
+          "binary bed compare.py refuses windows 3..6 and 3..13 s together, naming them: %r" % refused[:160])
     try:
         khan_runs.read_run(fake_run("centre_U0.015_short", "short", "off", "1e+06", costs=False))
         refused = ""

@@ -7,8 +7,8 @@ RUN: a run directory of tutorials/binaryBedKhan (runs/<method>_U<U>_<mode>[_back
 that postprocess.py has processed (its results/bed.csv, layers.csv, profiles.csv, messages.txt; the
 case, the stage costs and the commit are bed.csv's columns, so a copy of results/ alone will do, as
 validation/khan/results/runs/ keeps them). The
-runs compared must share one mode and one Young's modulus (refused otherwise: their windows and
-contacts differ); velocities, methods, background fields and ranks may differ. OUT gets:
+runs compared must share one averaging window and one Young's modulus (refused otherwise: their beds
+differ; a long run post-processed at 6 s has the short mode's window); velocities, methods, background fields and ranks may differ. OUT gets:
 
 - summary.csv, one row per run and species, with the columns
   method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,
@@ -72,7 +72,7 @@ def summary_rows(runs):
 
 def write_table(path, runs, case):
     with open(path, "w") as f:
-        f.write("Mode %s, Young's modulus %s Pa.\n\n" % case)
+        f.write("Averaging window %s s, Young's modulus %s Pa.\n\n" % case)
         f.write("| run | species | alpha_p plateau ± sem | R-Z | drag eq. | plateau - R-Z | from dp slope | layer (mm) "
                 "| mean height (mm) | its drift (mm) | dp (Pa) ± sem | weight (Pa) | dp err | mixing (mm) | window (s) | wall (s) "
                 "| coupling | DEM / fluid | coupling / fluid |\n")
@@ -221,14 +221,14 @@ def main(argv):
         print(__doc__.split("\n\n")[1], file=sys.stderr)
         return 2
     out, runs = argv[0], [read_run(r) for r in argv[1:]]
-    mode, young = one_case(runs)
+    win, young = one_case(runs)
     os.makedirs(out, exist_ok=True)
     rows = summary_rows(runs)
     with open(os.path.join(out, "summary.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=HEADER.split(","), lineterminator="\n")
         w.writeheader()
         w.writerows(rows)
-    write_table(os.path.join(out, "table.md"), runs, (mode, young))
+    write_table(os.path.join(out, "table.md"), runs, (win, young))
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -241,7 +241,7 @@ def main(argv):
         for w in r["warnings"]:
             print(w)
     checks(runs)
-    print("compare.py: %d runs (mode %s, E = %s Pa), %d rows: %s" % (len(runs), mode, young, len(rows), ", ".join(
+    print("compare.py: %d runs (window %s s, E = %s Pa), %d rows: %s" % (len(runs), win, young, len(rows), ", ".join(
         os.path.join(out, f) for f in ("summary.csv", "table.md", "alpha_p_profiles.png", "error_vs_runtime.png"))))
     return 0
 
