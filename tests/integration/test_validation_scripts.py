@@ -796,5 +796,18 @@ with tempfile.TemporaryDirectory() as tmp:
           "heights timed from a write's DEM step: dp %+.2e, walls %.4f, %d samples, expansion %.4f"
           % (row["dp_rel_err"], row["wall_force_share"], row["samples"], row["expansion_2zbar_over_settled"]))
 
+# samePhysics.py (a cost setting against the tutorial's): two windows of one run agree; a drag law
+# whose Reynolds number differs (the ingredient dragSlipRe) does not. Committed runs of the study.
+ing = os.path.join(top, "validation", "muller", "results", "ingredients")
+def same_physics(a, b):
+    r = subprocess.run([sys.executable, os.path.join(top, "validation", "muller", "samePhysics.py"),
+                        os.path.join(ing, a), os.path.join(ing, b)], capture_output=True, text=True)
+    return r.returncode, (r.stdout.strip().splitlines() or [""])[-1]
+rc, last = same_physics("bigParticle_dx1_U0.9_study_baseline_185a0ba", "bigParticle_dx1_U0.9_study_baseline_window2_185a0ba")
+check(rc == 0 and last.endswith("14 of 14 agree: UNCHANGED"), "samePhysics.py: two windows of one run: %r" % last)
+rc, last = same_physics("bigParticle_dx1_U0.9_study_baseline_185a0ba", "bigParticle_dx1_U0.9_study_dragSlipRe_185a0ba")
+check(rc == 0 and last.endswith("CHANGED") and "UNCHANGED" not in last and "13 of 14" in last,
+      "samePhysics.py: Di Felice's Reynolds number from the interstitial slip changes the expansion: %r" % last)
+
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)
