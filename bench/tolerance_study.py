@@ -17,8 +17,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "etc", "python"))
 from muller_compare import read_profile  # noqa: E402  (the reader of profiles.py's CSV files)
-
-HEIGHTS = ["15", "16.4", "20", "25", "31.2", "35"]
+from muller_plots import HEIGHTS_MM as HEIGHTS  # noqa: E402  (the six MR heights)
 QUANTITIES = ["voidfractiondepthbinned", "vzdepthbinned"]
 
 

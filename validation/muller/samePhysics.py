@@ -27,8 +27,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."), "etc", "python"))
 from muller_compare import read_profile  # noqa: E402
-
-HEIGHTS = ["15", "16.4", "20", "25", "31.2", "35"]
+from muller_plots import HEIGHTS_MM as HEIGHTS  # noqa: E402  (the six MR heights, one list)
 QUANTITIES = [("voidfractiondepthbinned", "gas fraction"), ("vzdepthbinned", "v_z (m/s)")]
 PROFILE_FACTOR = 2.0      # profile RMS difference against RMS combined error
 DP_TOLERANCE = 0.01       # of the weight
@@ -60,11 +59,13 @@ def pressure(run):
 
 def compare(ref, other):
     """[(label, ref value, other value, difference, allowed, agrees)] and the v_z peaks at 15 mm"""
-    rows = []
+    rows, peaks = [], None
     for q, label in QUANTITIES:
         for z in HEIGHTS:
             xa, ya, ea = profile(ref, q, z)
             xb, yb, eb = profile(other, q, z)
+            if (q, z) == ("vzdepthbinned", "15"):
+                peaks = [max(ya), max(yb)]
             if len(xa) != len(xb) or any(abs(a - b) > 1e-9 for a, b in zip(xa, xb)):
                 sys.exit("samePhysics.py: %s at %s mm: the two runs sample different points" % (q, z))
             d = math.sqrt(sum((a - b) ** 2 for a, b in zip(ya, yb)) / len(ya))
@@ -80,7 +81,6 @@ def compare(ref, other):
     rows.append(("pressure drop - weight (of the weight)", dpa, dpb, dpb - dpa, allowed, abs(dpb - dpa) <= allowed))
     ea, eb = float(pa["expansion_2zbar_over_settled"]), float(pb["expansion_2zbar_over_settled"])
     rows.append(("expansion", ea, eb, eb - ea, EXPANSION_TOLERANCE * ea, abs(eb - ea) <= EXPANSION_TOLERANCE * ea))
-    peaks = [max(profile(r, "vzdepthbinned", "15")[1]) for r in (ref, other)]
     return rows, peaks
 
 
