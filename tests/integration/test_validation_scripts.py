@@ -809,5 +809,52 @@ rc, last = same_physics("bigParticle_dx1_U0.9_study_baseline_185a0ba", "bigParti
 check(rc == 0 and last.endswith("CHANGED") and "UNCHANGED" not in last and "13 of 14" in last,
       "samePhysics.py: Di Felice's Reynolds number from the interstitial slip changes the expansion: %r" % last)
 
+# samePhysics.py -windows (the permutation test over windows): windows made from one committed window
+# with offsets c (the profiles and the two scalars shifted by c times 5 % of their own mean). Settings
+# whose windows have the same mean offset: no change detected (p = 1); a shift far beyond the
+# windows' spread: CHANGED at the smallest p of 4 and 4 windows (2 of 70 divisions); 3 and 3: refused.
+def offset_window(dst, c):
+    base = os.path.join(ing, "bigParticle_dx1_U0.9_study_baseline_185a0ba")
+    os.makedirs(dst)
+    for name in os.listdir(base):
+        src = os.path.join(base, name)
+        if name.startswith("profile_") and name.endswith(".csv"):
+            lines = open(src).read().splitlines()
+            rows = [l.split(",") for l in lines[2:]]
+            mean = sum(abs(float(r[1])) for r in rows) / len(rows)
+            with open(os.path.join(dst, name), "w") as f:
+                f.write("\n".join(lines[:2] + [",".join([r[0], repr(float(r[1]) + 0.05 * c * mean)] + r[2:])
+                                                for r in rows]) + "\n")
+        elif name == "pressure.csv":
+            rows = list(csv.DictReader(open(src)))
+            for r in rows:
+                for k in ("dp_rel_err", "expansion_2zbar_over_settled"):
+                    r[k] = repr(float(r[k]) * (1 + 0.05 * c))
+            with open(os.path.join(dst, name), "w", newline="") as f:
+                w = csv.DictWriter(f, fieldnames=list(rows[0]))
+                w.writeheader()
+                w.writerows(rows)
+def same_physics_windows(tmp, ref_c, other_c):
+    dirs = []
+    for tag, cs in (("a", ref_c), ("b", other_c)):
+        dirs.append([])
+        for i, c in enumerate(cs):
+            d = os.path.join(tmp, "%s%d_%g" % (tag, i, c))
+            if not os.path.isdir(d):
+                offset_window(d, c)
+            dirs[-1].append(d)
+    r = subprocess.run([sys.executable, os.path.join(top, "validation", "muller", "samePhysics.py"), "-windows"]
+                       + dirs[0] + ["--"] + dirs[1], capture_output=True, text=True)
+    return r.returncode, ((r.stdout + r.stderr).strip().splitlines() or [""])[-1]
+with tempfile.TemporaryDirectory() as tmp:
+    rc, last = same_physics_windows(tmp, [1, -1, 2, -2], [1.5, -1.5, 0.5, -0.5])
+    check(rc == 0 and last.endswith("p = 1.000 over 70 divisions of the windows: NO CHANGE DETECTED"),
+          "samePhysics.py -windows: windows of the same mean: %r" % last)
+    rc, last = same_physics_windows(tmp, [1, -1, 2, -2], [21, 19, 22, 18])
+    check(rc == 0 and "p = 0.029 over 70" in last and last.endswith(": CHANGED"),
+          "samePhysics.py -windows: a shift ten times the windows' spread: %r" % last)
+    rc, last = same_physics_windows(tmp, [1, -1, 2], [21, 19, 22])
+    check(rc != 0 and "4 and 4 windows at least" in last, "samePhysics.py -windows: 3 and 3 refused: %r" % last)
+
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)

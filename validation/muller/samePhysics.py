@@ -19,7 +19,25 @@ the bed is chaotic, so two runs that differ in a setting are two samples of the 
 The pair is UNCHANGED when every one of the 14 agrees. The v_z peak at 15 mm (the circulation issue
 42 follows) is listed beside, not judged: one point of one profile.
 Prints the table (and writes it to OUT.md), the last line "samePhysics.py: N of 14 agree: VERDICT".
+
+    samePhysics.py [-o OUT.md] -windows REF_W1 REF_W2 ... -- OTHER_W1 OTHER_W2 ...
+
+Each argument is one window of a run (profiles.py and pressureDrop.py over it: equal, non-overlapping
+windows after the start-up). Why: the batch errors of one 5 s window understate how far this bed's time
+averages move from one window to the next (the tutorial's own halves "differ" by the rule above,
+validation/muller/results/medium/README.md), so this form takes the spread from the windows themselves.
+The rule (written before the runs it judges, issue 44): the 14 quantities above, each window one sample;
+for each, D = the RMS over its points of the difference of the two settings' window means, divided by
+the RMS over its points of the standard deviation of all windows about their grand mean (a scale that
+does not depend on which window belongs to which setting); the statistic T is the sum of the 14. Under
+"the same physics" the windows are exchangeable, so T is compared with its value for every division of
+the windows into two groups of the same sizes (a permutation test): p = the share of divisions with a
+T as large as the observed one. CHANGED when p <= 0.05, else NO CHANGE DETECTED (with p and the
+differences beside the windows' spread, so that the size of what could hide in the noise is seen).
+Needs enough windows that p <= 0.05 can happen (4 and 4 at least). Each quantity's own p is listed,
+not judged; so are the windows' v_z peaks at 15 mm.
 """
+import itertools
 import csv
 import math
 import os
@@ -84,13 +102,102 @@ def compare(ref, other):
     return rows, peaks
 
 
+def window_samples(window):
+    """{label: list of values} of one window: the 12 profiles (over their points), the pressure drop
+    (of the weight) and the expansion (one value each); and the v_z peak at 15 mm"""
+    out, xs_of = {}, {}
+    for q, label in QUANTITIES:
+        for z in HEIGHTS:
+            xs, ys, _ = profile(window, q, z)
+            out["%s at %s mm" % (label, z)] = list(ys)
+            xs_of["%s at %s mm" % (label, z)] = list(xs)
+    pr = pressure(window)
+    out["pressure drop - weight (of the weight)"] = [float(pr["dp_rel_err"])]
+    out["expansion"] = [float(pr["expansion_2zbar_over_settled"])]
+    return out, xs_of, max(out["v_z (m/s) at 15 mm"])
+
+
+def permutation_test(ref_windows, other_windows):
+    """rows (label, ref mean, other mean, D, spread, own p) and the overall p of the rule above"""
+    samples = [window_samples(w) for w in ref_windows + other_windows]
+    labels = list(samples[0][0])
+    for w, (s, xs, _) in zip(ref_windows + other_windows, samples):
+        if any(len(xs[k]) != len(samples[0][1][k]) or any(abs(a - b) > 1e-9 for a, b in zip(xs[k], samples[0][1][k]))
+               for k in xs):
+            sys.exit("samePhysics.py: %s samples other points than %s" % (w, ref_windows[0]))
+    n, ka = len(samples), len(ref_windows)
+    rms = lambda v: math.sqrt(sum(x * x for x in v) / len(v))
+    scale = {}
+    for k in labels:
+        cols = list(zip(*[s[0][k] for s in samples]))   # per point, the n windows' values
+        sd = [math.sqrt(sum((v - sum(c) / n) ** 2 for v in c) / (n - 1)) for c in cols]
+        scale[k] = rms(sd) or 1.0
+
+    def stats(group):
+        other = [i for i in range(n) if i not in group]
+        out = {}
+        for k in labels:
+            ma = [sum(samples[i][0][k][j] for i in group) / len(group) for j in range(len(samples[0][0][k]))]
+            mb = [sum(samples[i][0][k][j] for i in other) / len(other) for j in range(len(ma))]
+            out[k] = (rms([b - a for a, b in zip(ma, mb)]) / scale[k], sum(ma) / len(ma), sum(mb) / len(mb))
+        return out
+
+    observed = stats(tuple(range(ka)))
+    t_obs = sum(v[0] for v in observed.values())
+    splits = list(itertools.combinations(range(n), ka))
+    perms = [stats(g) for g in splits]
+    p_all = sum(sum(v[0] for v in s.values()) >= t_obs - 1e-12 for s in perms) / len(splits)
+    rows = []
+    for k in labels:
+        d, a, b = observed[k]
+        own_p = sum(s[k][0] >= d - 1e-12 for s in perms) / len(splits)
+        rows.append((k, a, b, d * scale[k], scale[k], own_p))
+    return rows, p_all, t_obs, len(splits), [s[2] for s in samples]
+
+
+def main_windows(argv):
+    if "--" not in argv:
+        sys.exit("usage: samePhysics.py [-o OUT.md] -windows REF_W1 REF_W2 ... -- OTHER_W1 OTHER_W2 ...")
+    cut = argv.index("--")
+    ref_w, other_w = argv[:cut], argv[cut + 1:]
+    n_splits = math.comb(len(ref_w) + len(other_w), len(ref_w)) if ref_w and other_w else 0
+    smallest_p = (2 if len(ref_w) == len(other_w) else 1) / n_splits if n_splits else 1
+    if len(ref_w) < 3 or len(other_w) < 3 or smallest_p > 0.05:
+        sys.exit("samePhysics.py -windows: %d and %d windows cannot give p <= 0.05 (the smallest p is %.3g): "
+                 "4 and 4 windows at least" % (len(ref_w), len(other_w), smallest_p))
+    rows, p_all, t_obs, n_splits, peaks = permutation_test(ref_w, other_w)
+    verdict = "CHANGED" if p_all <= 0.05 else "NO CHANGE DETECTED"
+    lines = ["Reference windows: %s" % ", ".join(os.path.normpath(w) for w in ref_w),
+             "Other windows: %s" % ", ".join(os.path.normpath(w) for w in other_w), "",
+             "| quantity | reference (mean of windows) | other | RMS difference of the means | windows' spread (RMS sd) | own p |",
+             "|---|---|---|---|---|---|"]
+    for label, a, b, d, spread, own_p in rows:
+        lines.append("| %s | %.4g | %.4g | %.3g | %.3g | %.2f |" % (label, a, b, d, spread, own_p))
+    lines += ["", "v_z peak at 15 mm per window (not judged): reference %s; other %s m/s" % (
+        ", ".join("%.3f" % v for v in peaks[:len(ref_w)]), ", ".join("%.3f" % v for v in peaks[len(ref_w):])),
+        "", "samePhysics.py: T = %.3g, p = %.3f over %d divisions of the windows: %s" % (t_obs, p_all, n_splits, verdict)]
+    return "\n".join(lines)
+
+
 def main(argv):
     out = None
     if len(argv) >= 2 and argv[0] == "-o":
         out, argv = argv[1], argv[2:]
-    if len(argv) != 2:
-        sys.exit("usage: samePhysics.py [-o OUT.md] REFERENCE_RUN OTHER_RUN")
-    ref, other = argv
+    if argv and argv[0] == "-windows":
+        text = main_windows(argv[1:])
+    else:
+        if len(argv) != 2:
+            sys.exit("usage: samePhysics.py [-o OUT.md] REFERENCE_RUN OTHER_RUN\n"
+                     "       samePhysics.py [-o OUT.md] -windows REF_W1 REF_W2 ... -- OTHER_W1 OTHER_W2 ...")
+        text = main_pair(*argv)
+    print(text)
+    if out:
+        with open(out, "w") as f:
+            f.write(text + "\n")
+    return 0
+
+
+def main_pair(ref, other):
     rows, peaks = compare(ref, other)
     n = sum(r[5] for r in rows)
     verdict = "UNCHANGED" if n == len(rows) else "CHANGED"
@@ -100,12 +207,7 @@ def main(argv):
         lines.append("| %s | %.4g | %.4g | %+.3g | %.3g | %s |" % (label, a, b, d, allowed, "agrees" if ok else "**differs**"))
     lines += ["", "v_z peak at 15 mm (not judged): %.3f and %.3f m/s" % tuple(peaks), "",
               "samePhysics.py: %d of %d agree: %s" % (n, len(rows), verdict)]
-    text = "\n".join(lines)
-    print(text)
-    if out:
-        with open(out, "w") as f:
-            f.write(text + "\n")
-    return 0
+    return "\n".join(lines)
 
 
 if __name__ == "__main__":
