@@ -856,5 +856,15 @@ with tempfile.TemporaryDirectory() as tmp:
     rc, last = same_physics_windows(tmp, [1, -1, 2], [21, 19, 22])
     check(rc != 0 and "4 and 4 windows at least" in last, "samePhysics.py -windows: 3 and 3 refused: %r" % last)
 
+# windows.py (a run's window cut in N): bad input stops with the reason, before anything is written
+with tempfile.TemporaryDirectory() as tmp:
+    win = os.path.join(top, "validation", "muller", "windows.py")
+    for args, says in (([tmp, "2", "12", "5", os.path.join(tmp, "w")], "has no postProcessing"),
+                       ([tmp, "12", "2", "5", os.path.join(tmp, "w")], "needs T_END > T_START"),
+                       ([tmp, "2", "12", "five", os.path.join(tmp, "w")], "a whole number")):
+        r = subprocess.run([sys.executable, win] + args, capture_output=True, text=True)
+        check(r.returncode != 0 and says in r.stderr and not os.path.exists(os.path.join(tmp, "w")),
+              "windows.py %s: %r" % (" ".join(args[1:4]), r.stderr.strip()))
+
 print("%d passed, %d failed" % (npass, nfail))
 sys.exit(1 if nfail else 0)
