@@ -27,8 +27,9 @@ import sys
 
 import numpy as np
 
+from muller_plots import HEIGHTS_MM as HEIGHTS  # the six MR heights, one list
+
 WIDTH = 0.044
-HEIGHTS = ("15", "16.4", "20", "25", "31.2", "35")
 # the MR velocity profiles (0.9 m/s) and the MR gas fraction nearest in height
 MR_PAIRS = (("15", "16.4"), ("25", "31.2"), ("35", "31.2"))
 
