@@ -105,6 +105,11 @@ FixCoupleCoarse::FixCoupleCoarse(LAMMPS *lmp, int narg, char **arg) :
   // that first-setup pass is not needed (fix rigid does the same).
   just_created = 0;
 
+  // begin_segment() can ask for a neighbour-list build at a segment's last step (Neighbor::decide
+  // checks next_reneighbor of the fixes that force reneighbouring)
+  force_reneighbor = 1;
+  next_reneighbor = -1;
+
   grow_arrays(atom->nmax);
   atom->add_callback(0);  // grow/copy/exchange
   atom->add_callback(1);  // restart
@@ -368,6 +373,28 @@ void FixCoupleCoarse::push_drag(const double *K, const double *ufluid)
     fcoupling_[i][6] = ufluid[3*k+2];
     k++;
   }
+}
+
+void FixCoupleCoarse::begin_segment(bigint nsteps, int refresh, int migrate)
+{
+  if (refresh) {
+    // what the setup's force evaluation would give: the force of the last step less the coupling
+    // force it holds (fapplied_), plus the one just pushed at the particle's current velocity
+    double sum[3] = {0.0, 0.0, 0.0};
+    double **f = atom->f;
+    int *mask = atom->mask;
+    for (int i = 0; i < atom->nlocal; i++) {
+      double fi[3] = {0.0, 0.0, 0.0};
+      if (apply_ && (mask[i] & groupbit)) coupling_force(i, fi);
+      for (int d = 0; d < 3; d++) {
+        f[i][d] += fi[d] - fapplied_[i][d];
+        fapplied_[i][d] = fi[d];
+        sum[d] += fi[d];
+      }
+    }
+    for (int d = 0; d < 3; d++) last_applied_[d] = sum[d];
+  }
+  next_reneighbor = (migrate && nsteps > 0) ? update->ntimestep + nsteps : -1;
 }
 
 // stored force + drag K (u_fluid - v) with the particle's velocity of this DEM step: the drag

@@ -49,8 +49,10 @@ through lmp->modify and, every coupling interval, it
   3. calls push_forces() with one force vector per particle, in the order of
      the pull(), and (optionally) push_drag() with a drag coefficient and the
      fluid velocity per particle;
-  4. advances the DEM with "run N pre yes post no" (the setup makes the first
-     half-step use the forces just pushed).
+  4. calls begin_segment() and advances the DEM with "run N pre no post no":
+     LIGGGHTS' setup (a neighbour-list build and a force evaluation every
+     segment) is needed only when something else changed the DEM between
+     segments (the solver then runs "pre yes").
 
 The pushed force of every particle is stored in a per-atom array that travels
 with the particle when it migrates to another processor or when LIGGGHTS sorts
@@ -91,6 +93,14 @@ in the fix group, in LIGGGHTS' local atom order at the time of the call):
         velocity v on top of the pushed force: the drag relaxes with the DEM
         step and stays stable when the coupling interval is longer than the
         particle response time m/K.
+   void begin_segment(bigint nsteps, int refresh, int migrate);
+        before a DEM segment of nsteps steps. refresh (a segment without setup):
+        the force on each particle still holds the coupling force of the last
+        step; it is replaced by the one just pushed, at the current velocity, as
+        the setup would, so the first half-kick uses it and coupling_impulse()
+        counts from it. migrate (a parallel run): the segment's last step
+        rebuilds the neighbour lists, so that every particle is held by the rank
+        of its sub-domain when the solver pulls them after the segment.
    void total_force(double out[3]) const;
         sum of the coupling force (stored force + drag part at the current
         velocities) over the local particles (no MPI communication).
@@ -157,6 +167,7 @@ class FixCoupleCoarse : public Fix {
   void pull(double *x, double *v, double *radius, double *density, int *type, long long *id);
   void push_forces(const double *f);
   void push_drag(const double *K, const double *ufluid);
+  void begin_segment(bigint nsteps, int refresh, int migrate);
   void total_force(double out[3]) const;
   void coupling_impulse(double out[3]) const;
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "lammps.h"
+#include "atom.h"
 #include "input.h"
 #include "modify.h"
 #include "fix.h"
@@ -123,7 +124,8 @@ Foam::liggghtsDem::liggghtsDem(const fvMesh& mesh, const dictionary& dict)
     lmp_(nullptr),
     fix_(nullptr),
     restarted_(false),
-    ownsMpi_(false)
+    ownsMpi_(false),
+    needsSetup_(true)
 {
     // the DEM script and its relative paths belong to the case, not to processorN/
     const fileName caseDir = mesh.time().globalPath();
@@ -287,38 +289,46 @@ void Foam::liggghtsDem::command(const std::string& line)
 {
     demCall guard;
     lmp_->input->one(line.c_str());
+    needsSetup_ = true;
 }
 
-void Foam::liggghtsDem::deleteMarkedParticles()
+bool Foam::liggghtsDem::deleteMarkedParticles()
 {
     // fix massflow/mesh ... delete_atoms yes marks the particles that crossed its surface and deletes
-    // them in its pre_exchange, which LIGGGHTS calls only where a run rebuilds its neighbour lists.
-    // A segment starts with a setup (a rebuild that does not call it), so a segment too short for the
-    // particles to move half the skin distance never deletes them: the deletion is called here, before
-    // the setup that follows rebuilds the lists without them. (No-op when nothing is marked.)
+    // them in its pre_exchange, which LIGGGHTS calls only where a run rebuilds its neighbour lists, and
+    // a setup's rebuild does not call it: the deletion is called here, between segments, and a
+    // deletion makes the next segment start with a setup that rebuilds the lists without them.
+    // (No-op when nothing is marked.)
     LAMMPS_NS::Modify& modify = *lmp_->modify;
     demCall guard;
+    const int before = lmp_->atom->nlocal;
     for (int i = 0; i < modify.nfix; ++i)
     {
         if (std::string(modify.fix[i]->style).compare(0, 13, "massflow/mesh") == 0) modify.fix[i]->pre_exchange();
     }
+    return returnReduce(lmp_->atom->nlocal != before, orOp<bool>());
 }
 
 void Foam::liggghtsDem::run(label nSteps)
 {
-    // Every DEM segment starts with LIGGGHTS' setup: the forces of its first half-step are then those
-    // of the coupling data just pushed (K, u_f at the particles' current velocity), the same in serial,
-    // in parallel (where a setup follows each segment, below) and after a restart or write_restart.
-    deleteMarkedParticles();
-    command("run " + std::to_string(nSteps) + " pre yes post no");
-    if (Pstream::parRun())
+    // A segment continues the DEM's last step ("run N pre no": velocity Verlet as in one long
+    // LIGGGHTS run), with the coupling force in each particle's force replaced by the one just pushed
+    // (begin_segment: the first half-kick uses it, as LIGGGHTS' setup would make it). The setup (a
+    // neighbour-list build and a force evaluation: a fifth of the Mueller demo's DEM stage serially,
+    // two of them a segment in parallel before; bench/cases) runs only after something else changed the DEM: the first segment, a command, a restart
+    // written, particles deleted (their neighbour lists are stale).
+    const bool deleted = deleteMarkedParticles();
+    const bool setup = needsSetup_ || deleted;
+    // In parallel LIGGGHTS moves a particle to the rank of its new sub-domain only when it rebuilds
+    // its neighbour lists; until then a particle that crossed the processor plane is still held by
+    // the old rank, outside that rank's part of the CFD mesh. The segment's last step rebuilds them
+    // (migrate), so that every particle is pulled by its owner.
     {
-        // LIGGGHTS moves a particle to the rank of its new sub-domain only when it rebuilds its
-        // neighbour lists; until then a particle that crossed the processor plane is still held by
-        // the old rank, outside that rank's part of the CFD mesh. A zero-step run with setup
-        // migrates every particle to its owner (one neighbour-list build per coupling step).
-        command("run 0 pre yes post no");
+        demCall guard;
+        fix_->begin_segment(nSteps, !setup, Pstream::parRun());
+        lmp_->input->one(("run " + std::to_string(nSteps) + (setup ? " pre yes" : " pre no") + " post no").c_str());
     }
+    needsSetup_ = false;
 }
 
 void Foam::liggghtsDem::writeRestart(const std::string& file)
