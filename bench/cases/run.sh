@@ -11,13 +11,18 @@
 #           contacts), divided, 0.015 m/s: STRETCH s (default 0.1) from a state at KHAN_T s (default
 #           3: the small layer has come down onto the big one), made once with the tutorial's
 #           settings on 2 ranks (about 20 min) and kept in bench/cases/work/khan_state
-# Written: bench/cases/results/cases.csv (case, settings, np, simulated s, wall s of the time loop,
-# wall s per simulated s, the stage timers' seconds: DEM, fluid, coupling (every other stage but the
-# output-only fields), the cost ratio to the baseline of the same case and np), ratios.md (cost per
-# simulated second and the tutorial / baseline ratio, the stage shares, the 2-rank speed-ups of the
-# run, of its DEM stage and of its fluid stage) and run_info.txt (command, commit, load).
+# Written: bench/cases/results/runs.csv (a row per run: case, settings, np, simulated s, wall s of
+# the time loop, wall s per simulated s, the stage timers' seconds: DEM, fluid, coupling (every other
+# stage but the output-only fields)), cases.csv (a row per case and rank count: the baseline's and
+# the tutorial's wall s per simulated s, their ratio, each one's DEM / fluid / coupling shares),
+# ratios.md (the same as tables, with the 2-rank speed-ups of the run, of its DEM stage and of its
+# fluid stage) and run_info.txt (command, commit, load).
 #
-#   bench/cases/run.sh [-cases "muller khan"] [-np "1 2"] [-stretch S] [-khanState T]
+#   bench/cases/run.sh [-cases "muller khan"] [-np "1 2"] [-stretch S] [-khanState T] [-baselineTree DIR]
+#
+# -baselineTree DIR: the baseline rows run with the binaries of another built tree (a clone at the
+#   commit before a code change), the tutorial rows with this tree's: the ratio is then the cost
+#   before issue 44's settings and code against after, not the settings alone
 #
 # The baseline (the settings before issue 44, bench/cases/README.md says why each changed):
 #   muller  DEM step 3e-6 s with couplingInterval 60 (CFD step 1.8e-4 s); p and pFinal to an
@@ -30,9 +35,9 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
 . "$here/../solverLog.sh"   # run_solver, stage timers, loop wall time
-cases="muller khan"; nps="1 2"; stretch=0.1; khan_t=3
+cases="muller khan"; nps="1 2"; stretch=0.1; khan_t=3; baseline_tree=
 while [ $# -gt 0 ]; do
-    case "$1" in -cases|-np|-stretch|-khanState)
+    case "$1" in -cases|-np|-stretch|-khanState|-baselineTree)
         [ $# -ge 2 ] || { echo "bench/cases: $1 needs a value (see -h)" >&2; exit 2; } ;;
     esac
     case "$1" in
@@ -40,7 +45,8 @@ while [ $# -gt 0 ]; do
         -np) nps="$2"; shift 2 ;;
         -stretch) stretch="$2"; shift 2 ;;
         -khanState) khan_t="$2"; shift 2 ;;
-        -h|--help) sed -n '2,29p' "$0"; exit 0 ;;
+        -baselineTree) baseline_tree="$2"; shift 2 ;;
+        -h|--help) sed -n '2,/^set -uo/{/^#/p}' "$0"; exit 0 ;;
         *) echo "bench/cases: unknown option '$1' (see -h)" >&2; exit 2 ;;
     esac
 done
@@ -50,6 +56,11 @@ done
 for np in $nps; do
     case "$np" in 1|2) ;; *) echo "bench/cases: np $np: 1 or 2 ranks" >&2; exit 2 ;; esac
 done
+if [ -n "$baseline_tree" ]; then
+    [ -x "$baseline_tree/platforms/$WM_OPTIONS/bin/coarseDemFoam" ] && [ -f "$baseline_tree/etc/bashrc" ] ||
+        { echo "bench/cases: -baselineTree $baseline_tree is not a built tree (no platforms/$WM_OPTIONS/bin/coarseDemFoam)" >&2; exit 2; }
+    baseline_tree="$(cd "$baseline_tree" && pwd)"
+fi
 for v in "$stretch" "$khan_t"; do
     /usr/bin/python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) > 0 else 1)" "$v" 2> /dev/null ||
         { echo "bench/cases: '$v' must be a time in s > 0" >&2; exit 2; }
@@ -97,12 +108,14 @@ khan_baseline() {
 }
 
 # ---- running one case: the solver from the state, its time loop's wall time and stage timers
-csv="$results/cases.csv"
+csv="$results/runs.csv"
+
+# binaries SETTINGS: the tree whose build runs these settings (the baseline's own with -baselineTree)
+binaries() { [ "$1" = baseline ] && [ -n "$baseline_tree" ] && echo "$baseline_tree" || echo "$top"; }
 # rows of earlier runs are kept for the cases and rank counts this run does not measure (np 1 and 2
 # may be measured apart, each on a quiet machine); run_info.txt gets a line per run
 header="case,settings,np,simulated_s,wall_s,wall_per_simulated_s,dem_s,fluid_s,coupling_s"
-# (ratios.py appends the column cost_ratio_to_baseline at the end: recomputed, so not compared)
-if [ -f "$csv" ] && [ "$(head -1 "$csv" | cut -d, -f1-9)" = "$header" ]; then
+if [ -f "$csv" ] && [ "$(head -1 "$csv")" = "$header" ]; then
     awk -F, -v cs=" $cases " -v ns=" $nps " 'NR == 1 || index(cs, " " $1 " ") == 0 || index(ns, " " $3 " ") == 0' "$csv" > "$csv.kept"
     mv "$csv.kept" "$csv"
 else
@@ -123,7 +136,8 @@ muller() { # settings np
     rm -rf "$d/fluidizedBedMuller/runs"
     [ "$1" = baseline ] && muller_baseline "$d/fluidizedBedMuller"
     log "muller $1 np $2: the demo's 0.1 s"
-    ( cd "$d/fluidizedBedMuller" && COARSEDEM_DIR="$top" ./Allrun -mode demo -model bigParticle -np "$2" > "$d/log.Allrun" 2>&1 ) ||
+    local bin; bin=$(binaries "$1")
+    ( . "$bin/etc/bashrc" && cd "$d/fluidizedBedMuller" && COARSEDEM_DIR="$bin" ./Allrun -mode demo -model bigParticle -np "$2" > "$d/log.Allrun" 2>&1 ) ||
         { echo "bench/cases: the Mueller demo failed ($d/log.Allrun)" >&2; return 1; }
     record muller "$1" "$2" 0.1 "$d/fluidizedBedMuller/runs/bigParticle_dx1_U0.9_demo/log.coarseDemFoam"
 }
@@ -167,7 +181,8 @@ khan() { # settings np
     sed -i "s/^endTime .*/endTime         $tend;/" "$d/system/controlDict"
     if [ "$2" -gt 1 ]; then (cd "$d" && decomposePar -force > log.decomposePar 2>&1) || return 1; fi
     log "khan $1 np $2: $stretch s from t = $t0 s"
-    run_solver "$d" "$2" || { echo "bench/cases: the binary bed failed ($d/log.coarseDemFoam)" >&2; return 1; }
+    local bin; bin=$(binaries "$1")
+    ( . "$bin/etc/bashrc" && run_solver "$d" "$2" ) || { echo "bench/cases: the binary bed failed ($d/log.coarseDemFoam)" >&2; return 1; }
     record khan "$1" "$2" "$stretch" "$d/log.coarseDemFoam"
     rm -rf "$d"/post/dump* "$d"/processor*/[0-9]*
 }
@@ -211,10 +226,11 @@ for c in $cases; do
     done
 done
 
-/usr/bin/python3 "$here/ratios.py" "$csv" > "$results/ratios.md" || exit 1
+/usr/bin/python3 "$here/ratios.py" "$csv" "$results/cases.csv" > "$results/ratios.md" || exit 1
 {
-    echo "command: bench/cases/run.sh -cases \"$cases\" -np \"$nps\" -stretch $stretch -khanState $khan_t"
+    echo "command: bench/cases/run.sh -cases \"$cases\" -np \"$nps\" -stretch $stretch -khanState $khan_t${baseline_tree:+ -baselineTree $baseline_tree}"
     echo "commit: $code_version"
+    [ -n "$baseline_tree" ] && echo "baseline rows: the binaries of $baseline_tree at $(cd "$baseline_tree" && etc/codeVersion)"
     echo "date: $started (start) to $(date -u '+%H:%M UTC')"
     echo "machine: $(nproc) cores; load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"
     echo

@@ -34,6 +34,7 @@ refused cases-np "np 3: 1 or 2 ranks" "$cases" -np "1 3"
 refused cases-stretch "'-0.1' must be a time in s > 0" "$cases" -stretch -0.1
 refused cases-novalue "-cases needs a value" "$cases" -cases
 refused cases-option "unknown option '-method'" "$cases" -method divided
+refused cases-baseline "is not a built tree" "$cases" -baselineTree "$work"
 refused demstep-case "invalid choice: 'ergun'" /usr/bin/python3 "$top/bench/demStep/collision.py" ergun
 
 make -s -C "$top/bench" > "$work/make.log" 2>&1 || { result fail "bench: kernel_bench does not build"; cat "$work/make.log"; finish; }
