@@ -90,6 +90,19 @@ double push(LAMMPS_NS::FixCoupleCoarse *fix, const Particles &p)
     return sum;
 }
 
+// after a run: the particles' total momentum (3) and the impulse the fix counted (3), over all ranks
+void momentum_and_impulse(LAMMPS_NS::FixCoupleCoarse *fix, double out[6])
+{
+    const Particles p = pull(fix);
+    double local[6] = {0, 0, 0, 0, 0, 0};
+    for (int i = 0; i < p.n; i++) {
+        const double m = mass(p.r[i], p.rho[i]);
+        for (int d = 0; d < 3; d++) local[d] += m * p.v[3 * i + d];
+    }
+    fix->coupling_impulse(local + 3);
+    MPI_Allreduce(local, out, 6, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+}
+
 }  // namespace
 
 int main(int argc, char **argv)
@@ -214,14 +227,8 @@ int main(int argc, char **argv)
         lmp->input->one(cmd);
         std::snprintf(cmd, sizeof(cmd), "run %d pre no post no", nrun);
         lmp->input->one(cmd);
-        p = pull(fix);
-        double after_local[6] = {0, 0, 0, 0, 0, 0}, after[6];
-        for (int i = 0; i < p.n; i++) {
-            const double m = mass(p.r[i], p.rho[i]);
-            for (int d = 0; d < 3; d++) after_local[d] += m * p.v[3 * i + d];
-        }
-        fix->coupling_impulse(after_local + 3);
-        MPI_Allreduce(after_local, after, 6, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+        double after[6];
+        momentum_and_impulse(fix, after);
         const double T = 2 * nrun * dt;
         double err = 0.0, scale = 0.0;
         for (int d = 0; d < 3; d++) {
@@ -261,14 +268,8 @@ int main(int argc, char **argv)
         fix->begin_segment(nrun, 1, nprocs > 1);
         std::snprintf(cmd, sizeof(cmd), "run %d pre no post no", nrun);
         lmp->input->one(cmd);
-        p = pull(fix);
-        double after_local[6] = {0, 0, 0, 0, 0, 0}, after[6];
-        for (int i = 0; i < p.n; i++) {
-            const double m = mass(p.r[i], p.rho[i]);
-            for (int d = 0; d < 3; d++) after_local[d] += m * p.v[3 * i + d];
-        }
-        fix->coupling_impulse(after_local + 3);
-        MPI_Allreduce(after_local, after, 6, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+        double after[6];
+        momentum_and_impulse(fix, after);
         const double T = nrun * dt;
         double err_impulse = 0.0, err_momentum = 0.0, scale = 0.0;
         for (int d = 0; d < 3; d++) {
