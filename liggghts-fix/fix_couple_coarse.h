@@ -101,6 +101,9 @@ in the fix group, in LIGGGHTS' local atom order at the time of the call):
         counts from it. migrate (a parallel run): the segment's last step
         rebuilds the neighbour lists, so that every particle is held by the rank
         of its sub-domain when the solver pulls them after the segment.
+        The refresh assumes that no fix after this one overwrites the force
+        (setforce, freeze, aveforce): with such a fix the solver starts every
+        segment with a setup ("run N pre yes").
    void total_force(double out[3]) const;
         sum of the coupling force (stored force + drag part at the current
         velocities) over the local particles (no MPI communication).

@@ -19,6 +19,8 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(HERE, "..", ".."), "etc", "python"))
+import muller_profiles  # noqa: E402  (the sample times of a run)
 
 
 def main(argv):
@@ -33,6 +35,11 @@ def main(argv):
         sys.exit("windows.py: needs T_END > T_START and N >= 1, got %g %g %d" % (t0, t1, n))
     if not os.path.isdir(os.path.join(run, "postProcessing")):
         sys.exit("windows.py: %s has no postProcessing/ (not a run of tutorials/fluidizedBedMuller)" % run)
+    # the last window must lie within the samples (profiles.py averages whatever falls in a window)
+    base = os.path.join(run, "postProcessing", "profiles")
+    times = list(muller_profiles.sample_dirs(base)) + [t for byt in muller_profiles.read_store(base).values() for t in byt]
+    if not times or max(times) < t1 - 0.006:
+        sys.exit("windows.py: %s's samples end at %s s, before T_END %g s" % (run, "%g" % max(times) if times else "none", t1))
     name = os.path.basename(os.path.normpath(run))
     run = os.path.abspath(run)
     os.makedirs(out, exist_ok=True)
@@ -49,6 +56,9 @@ def main(argv):
                                    capture_output=True, text=True)
                 if r.returncode != 0:
                     sys.exit("windows.py: %s over (%g, %g] failed:\n%s" % (script, a, b, r.stdout + r.stderr))
+                for line in r.stdout.splitlines():   # profiles.py's warnings (correlated batches...)
+                    if "warning" in line:
+                        print("windows.py: (%g, %g] s: %s" % (a, b, line), file=sys.stderr)
             shutil.rmtree(dest, ignore_errors=True)
             shutil.copytree(os.path.join(view, "results"), dest)
         print(dest)

@@ -309,16 +309,31 @@ bool Foam::liggghtsDem::deleteMarkedParticles()
     return returnReduce(lmp_->atom->nlocal != before, orOp<bool>());
 }
 
+bool Foam::liggghtsDem::forceOverwritingFix() const
+{
+    const LAMMPS_NS::Modify& modify = *lmp_->modify;
+    bool after = false;   // a fix defined after couple/coarse (post_force runs in definition order)
+    for (int i = 0; i < modify.nfix; ++i)
+    {
+        if (modify.fix[i] == fix_) { after = true; continue; }
+        const std::string style(modify.fix[i]->style);
+        if (after && (style == "setforce" || style == "freeze" || style == "aveforce")) return true;
+    }
+    return false;
+}
+
 void Foam::liggghtsDem::run(label nSteps)
 {
     // A segment continues the DEM's last step ("run N pre no": velocity Verlet as in one long
-    // LIGGGHTS run), with the coupling force in each particle's force replaced by the one just pushed
-    // (begin_segment: the first half-kick uses it, as LIGGGHTS' setup would make it). The setup (a
-    // neighbour-list build and a force evaluation: a fifth of the Mueller demo's DEM stage serially,
-    // two of them a segment in parallel before; bench/cases) runs only after something else changed the DEM: the first segment, a command, a restart
-    // written, particles deleted (their neighbour lists are stale).
+    // LIGGGHTS run), with the coupling force in each particle's force replaced by the one just
+    // pushed (begin_segment: the first half-kick uses it, as LIGGGHTS' setup would make it).
+    // LIGGGHTS' setup (a neighbour-list build and a whole force evaluation; a fifth of the Mueller
+    // demo's DEM stage serially, bench/cases/README.md) runs only after something else changed the
+    // DEM: the first segment, a command, a restart written, particles deleted (their neighbour lists
+    // are stale), and always when a fix overwrites the forces after the coupling's (the refresh
+    // would add the coupling force to a force that fix had set).
     const bool deleted = deleteMarkedParticles();
-    const bool setup = needsSetup_ || deleted;
+    const bool setup = needsSetup_ || deleted || forceOverwritingFix();
     // In parallel LIGGGHTS moves a particle to the rank of its new sub-domain only when it rebuilds
     // its neighbour lists; until then a particle that crossed the processor plane is still held by
     // the old rank, outside that rank's part of the CFD mesh. The segment's last step rebuilds them
