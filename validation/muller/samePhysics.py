@@ -78,6 +78,11 @@ def pressure(run):
     return rows[-1]
 
 
+def same_points(xa, xb):
+    """two profiles sampled at the same points"""
+    return len(xa) == len(xb) and all(abs(a - b) <= 1e-9 for a, b in zip(xa, xb))
+
+
 def compare(ref, other):
     """[(label, ref value, other value, difference, allowed, agrees)] and the v_z peaks at 15 mm"""
     rows, peaks = [], None
@@ -87,7 +92,7 @@ def compare(ref, other):
             xb, yb, eb = profile(other, q, z)
             if (q, z) == ("vzdepthbinned", "15"):
                 peaks = [max(ya), max(yb)]
-            if len(xa) != len(xb) or any(abs(a - b) > 1e-9 for a, b in zip(xa, xb)):
+            if not same_points(xa, xb):
                 sys.exit("samePhysics.py: %s at %s mm: the two runs sample different points" % (q, z))
             d = math.sqrt(sum((a - b) ** 2 for a, b in zip(ya, yb)) / len(ya))
             s = math.sqrt(sum(a * a + b * b for a, b in zip(ea, eb)) / len(ea))
@@ -125,8 +130,7 @@ def permutation_test(ref_windows, other_windows):
     samples = [window_samples(w) for w in ref_windows + other_windows]
     labels = list(samples[0][0])
     for w, (s, xs, _) in zip(ref_windows + other_windows, samples):
-        if any(len(xs[k]) != len(samples[0][1][k]) or any(abs(a - b) > 1e-9 for a, b in zip(xs[k], samples[0][1][k]))
-               for k in xs):
+        if not all(same_points(xs[k], samples[0][1][k]) for k in xs):
             sys.exit("samePhysics.py: %s samples other points than %s" % (w, ref_windows[0]))
     n, ka = len(samples), len(ref_windows)
     rms = lambda v: math.sqrt(sum(x * x for x in v) / len(v))
@@ -145,10 +149,10 @@ def permutation_test(ref_windows, other_windows):
             out[k] = (rms([b - a for a, b in zip(ma, mb)]) / scale[k], sum(ma) / len(ma), sum(mb) / len(mb))
         return out
 
-    observed = stats(tuple(range(ka)))
-    t_obs = sum(v[0] for v in observed.values())
     splits = list(itertools.combinations(range(n), ka))
     perms = [stats(g) for g in splits]
+    observed = perms[0]   # the first division is the observed one: the reference windows first
+    t_obs = sum(v[0] for v in observed.values())
     p_all = sum(sum(v[0] for v in s.values()) >= t_obs - 1e-12 for s in perms) / len(splits)
     rows = []
     for k in labels:
