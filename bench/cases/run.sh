@@ -13,7 +13,7 @@
 #           settings on 2 ranks (about 20 min) and kept in bench/cases/work/khan_state
 # Written: bench/cases/results/runs.csv (a row per run: case, settings, np, simulated s, wall s of
 # the time loop, wall s per simulated s, the stage timers' seconds: DEM, fluid, coupling (every other
-# stage but the output-only fields)), cases.csv (a row per case and rank count: the baseline's and
+# stage but the output-only fields), the build: the commit of the tree whose binaries ran it), cases.csv (a row per case and rank count: the baseline's and
 # the tutorial's wall s per simulated s, their ratio, each one's DEM / fluid / coupling shares),
 # ratios.md (the same as tables, with the 2-rank speed-ups of the run, of its DEM stage and of its
 # fluid stage) and run_info.txt (command, commit, load).
@@ -114,7 +114,7 @@ csv="$results/runs.csv"
 binaries() { [ "$1" = baseline ] && [ -n "$baseline_tree" ] && echo "$baseline_tree" || echo "$top"; }
 # rows of earlier runs are kept for the cases and rank counts this run does not measure (np 1 and 2
 # may be measured apart, each on a quiet machine); run_info.txt gets a line per run
-header="case,settings,np,simulated_s,wall_s,wall_per_simulated_s,dem_s,fluid_s,coupling_s"
+header="case,settings,np,simulated_s,wall_s,wall_per_simulated_s,dem_s,fluid_s,coupling_s,build"
 if [ -f "$csv" ] && [ "$(head -1 "$csv")" = "$header" ]; then
     awk -F, -v cs=" $cases " -v ns=" $nps " 'NR == 1 || index(cs, " " $1 " ") == 0 || index(ns, " " $3 " ") == 0' "$csv" > "$csv.kept"
     mv "$csv.kept" "$csv"
@@ -122,10 +122,12 @@ else
     echo "$header" > "$csv"
 fi
 record() { # case settings np simulated log
-    local w
+    local w build
+    # the version of the tree whose binaries ran the row (etc/codeVersion: its commit, -dirty when changed)
+    build=$("$(binaries "$2")/etc/codeVersion")
     w=$(loop_wall "$5")
     [ -n "$w" ] || { echo "bench/cases: no Progress line in $5" >&2; return 1; }
-    echo "$1,$2,$3,$4,$w,$(/usr/bin/python3 -c "import sys; print('%.6g' % (float(sys.argv[1]) / float(sys.argv[2])))" "$w" "$4"),$(stage "$5" DEM),$(stage "$5" fluid),$(coupling_seconds "$5")" >> "$csv"
+    echo "$1,$2,$3,$4,$w,$(/usr/bin/python3 -c "import sys; print('%.6g' % (float(sys.argv[1]) / float(sys.argv[2])))" "$w" "$4"),$(stage "$5" DEM),$(stage "$5" fluid),$(coupling_seconds "$5"),$build" >> "$csv"
 }
 
 # the Mueller demo in a copy of the tutorial (its own Allrun: the state, the sampling, the demo's 0.1 s)
