@@ -92,6 +92,7 @@ int main(int argc, char *argv[])
         while (pimple.loop())
         {
             #include "UEqn.H"
+            #include "pEqnCoeffs.H"
             while (pimple.correct())
             {
                 #include "pEqn.H"
