@@ -9,13 +9,15 @@
 # samples of the same bed. A tolerance is harmless when its profiles differ from the reference's no
 # more than those of a tighter tolerance do.
 #
-#   bench/tolerance_study.sh -setting diffusion|pressure|demStep|cfdStep|correctors [-values "REF T2 T3 ..."]
+#   bench/tolerance_study.sh -setting diffusion|pressure|velocity|demStep|cfdStep|correctors [-values "REF T2 T3 ..."]
 #
 # Settings:
 #   diffusion  diffusionProps tolerance (the smoothing's CG), model diffusion (b = 6 d); stage alphaP.
 #              Default values "1e-10 1e-12 1e-6"
 #   pressure   the tolerance of p and pFinal in system/fvSolution (GAMG; relTol 0.01 and 0 as the
 #              tutorial's), model bigParticle; stage fluid. Default values "1e-8 1e-10 1e-6"
+#   velocity   the tolerance of U and UFinal in system/fvSolution (smoothSolver symGaussSeidel, relTol
+#              0 as the tutorial's), model bigParticle; stage fluid. Default values "1e-8 1e-10 1e-6"
 #   demStep    the DEM step in s (DEM/materials.liggghts timestep), with couplingInterval set so that
 #              the CFD step stays 1.8e-4 s; model bigParticle; stage DEM. Default values
 #              "3e-6 1.5e-6 6e-6" (9.1, 4.5 and 18.2 % of the Rayleigh time 3.3e-5 s)
@@ -35,16 +37,17 @@ while [ $# -gt 0 ]; do
     case "$1" in
         -setting) setting="$2"; shift 2 ;;
         -values) values="$2"; shift 2 ;;
-        *) echo "usage: $0 -setting diffusion|pressure|demStep|cfdStep|correctors [-values \"REF T2 T3 ...\"]" >&2; exit 2 ;;
+        *) echo "usage: $0 -setting diffusion|pressure|velocity|demStep|cfdStep|correctors [-values \"REF T2 T3 ...\"]" >&2; exit 2 ;;
     esac
 done
 case "$setting" in
     diffusion) model=diffusion stage=alphaP; values=${values:-"1e-10 1e-12 1e-6"} ;;
     pressure) model=bigParticle stage=fluid; values=${values:-"1e-8 1e-10 1e-6"} ;;
+    velocity) model=bigParticle stage=fluid; values=${values:-"1e-8 1e-10 1e-6"} ;;
     demStep) model=bigParticle stage=DEM; values=${values:-"3e-6 1.5e-6 6e-6"} ;;
     cfdStep) model=bigParticle stage=fluid; values=${values:-"1.8e-4 9e-5 2.7e-4"} ;;
     correctors) model=bigParticle stage=fluid; values=${values:-"2 3 1"} ;;
-    *) echo "bench/tolerance_study: -setting must be diffusion, pressure, demStep, cfdStep or correctors (got '$setting')" >&2; exit 2 ;;
+    *) echo "bench/tolerance_study: -setting must be diffusion, pressure, velocity, demStep, cfdStep or correctors (got '$setting')" >&2; exit 2 ;;
 esac
 for t in $values; do
     if [ "$setting" = correctors ]; then
@@ -67,6 +70,9 @@ set_tolerance() { # tutorial-copy tol
         pressure) sed -i "s|^\( *p  *{ solver GAMG; smoother GaussSeidel; tolerance \)[^;]*;|\1$2;|" "$1/system/fvSolution"
                   grep -q "tolerance $2; relTol 0.01" "$1/system/fvSolution" ||
                       { echo "bench/tolerance_study: the p entry of $1/system/fvSolution is not the one this script edits" >&2; return 1; } ;;
+        velocity) sed -i "s#^\( *\"(U|UFinal)\" *{ solver smoothSolver; smoother symGaussSeidel; tolerance \)[^;]*;#\1$2;#" "$1/system/fvSolution"
+                  grep -q "symGaussSeidel; tolerance $2; relTol 0;" "$1/system/fvSolution" ||
+                      { echo "bench/tolerance_study: the U entry of $1/system/fvSolution is not the one this script edits" >&2; return 1; } ;;
         demStep)
             # the CFD step 1.8e-4 s kept: couplingInterval = 1.8e-4 / step, a whole number
             local n
