@@ -69,6 +69,13 @@ done
 work="$here/work"; results="$here/results"
 mkdir -p "$work" "$results"
 code_version=$("$top/etc/codeVersion"); started=$(date -u '+%Y-%m-%d %H:%M UTC')
+# each tree's build for runs.csv, taken once before anything under results/ is written: the tree's
+# commit, -dirty when its code (not its results) has uncommitted changes
+code_paths="src liggghts-fix etc wmake Allwmake"
+# shellcheck disable=SC2086
+build_top=$(cd "$top" && etc/codeVersion $code_paths)
+# shellcheck disable=SC2086
+build_baseline=$([ -n "$baseline_tree" ] && cd "$baseline_tree" && etc/codeVersion $code_paths)
 log() { echo "bench/cases: $*"; }
 add() { /usr/bin/python3 -c "import sys; print('%.10g' % (float(sys.argv[1]) + float(sys.argv[2])))" "$1" "$2"; }
 
@@ -122,9 +129,8 @@ else
     echo "$header" > "$csv"
 fi
 record() { # case settings np simulated log
-    local w build
-    # the version of the tree whose binaries ran the row (etc/codeVersion: its commit, -dirty when changed)
-    build=$("$(binaries "$2")/etc/codeVersion")
+    local w build=$build_top
+    [ "$2" = baseline ] && [ -n "$baseline_tree" ] && build=$build_baseline
     w=$(loop_wall "$5")
     [ -n "$w" ] || { echo "bench/cases: no Progress line in $5" >&2; return 1; }
     echo "$1,$2,$3,$4,$w,$(/usr/bin/python3 -c "import sys; print('%.6g' % (float(sys.argv[1]) / float(sys.argv[2])))" "$w" "$4"),$(stage "$5" DEM),$(stage "$5" fluid),$(coupling_seconds "$5"),$build" >> "$csv"
@@ -233,6 +239,9 @@ done
     echo "command: bench/cases/run.sh -cases \"$cases\" -np \"$nps\" -stretch $stretch -khanState $khan_t${baseline_tree:+ -baselineTree $baseline_tree}"
     echo "commit: $code_version"
     [ -n "$baseline_tree" ] && echo "baseline rows: the binaries of $baseline_tree at $(cd "$baseline_tree" && etc/codeVersion)"
+    # which binaries ran (checksum, build time, path): a tree's commit need not be the one it was built at
+    "$top/etc/codeVersion" -binaries | sed 's/^/binaries: /'
+    [ -n "$baseline_tree" ] && "$baseline_tree/etc/codeVersion" -binaries | sed 's/^/baseline binaries: /'
     echo "date: $started (start) to $(date -u '+%H:%M UTC')"
     echo "machine: $(nproc) cores; load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"
     echo

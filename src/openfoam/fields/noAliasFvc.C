@@ -80,14 +80,17 @@ Foam::tmp<Foam::volVectorField> Foam::noAliasFvc::reconstruct(const surfaceScala
 
 Foam::tmp<Foam::volTensorField> Foam::noAliasFvc::dev2GradUT(const volVectorField& U)
 {
-    const volTensorField gradU(fvc::grad(U));
+    // held as the tmp: with grad(U) cached (fvSolution cache) it refers to the stored field, not a copy
+    const tmp<volTensorField> tgradU(fvc::grad(U));
+    const volTensorField& gradU = tgradU();
     const volTensorField gradUT(T(gradU));
     return dev2(gradUT);
 }
 
 Foam::tmp<Foam::volVectorField> Foam::noAliasFvc::curl(const volVectorField& U)
 {
-    const volTensorField gradU(fvc::grad(U));
+    const tmp<volTensorField> tgradU(fvc::grad(U));
+    const volTensorField& gradU = tgradU();
     const volTensorField skewGradU(skew(gradU));
     tmp<volVectorField> tcurl(2.0*(*skewGradU));
     tcurl.ref().rename("curl(" + U.name() + ')');
