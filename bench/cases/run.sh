@@ -130,7 +130,7 @@ else
 fi
 record() { # case settings np simulated log
     local w build=$build_top
-    [ "$2" = baseline ] && [ -n "$baseline_tree" ] && build=$build_baseline
+    [ "$(binaries "$2")" = "$top" ] || build=$build_baseline
     w=$(loop_wall "$5")
     [ -n "$w" ] || { echo "bench/cases: no Progress line in $5" >&2; return 1; }
     echo "$1,$2,$3,$4,$w,$(/usr/bin/python3 -c "import sys; print('%.6g' % (float(sys.argv[1]) / float(sys.argv[2])))" "$w" "$4"),$(stage "$5" DEM),$(stage "$5" fluid),$(coupling_seconds "$5"),$build" >> "$csv"
@@ -238,7 +238,7 @@ done
 {
     echo "command: bench/cases/run.sh -cases \"$cases\" -np \"$nps\" -stretch $stretch -khanState $khan_t${baseline_tree:+ -baselineTree $baseline_tree}"
     echo "commit: $code_version"
-    [ -n "$baseline_tree" ] && echo "baseline rows: the binaries of $baseline_tree at $(cd "$baseline_tree" && etc/codeVersion)"
+    [ -n "$baseline_tree" ] && echo "baseline rows: the binaries of $baseline_tree at $build_baseline"
     # which binaries ran (checksum, build time, path): a tree's commit need not be the one it was built at
     "$top/etc/codeVersion" -binaries | sed 's/^/binaries: /'
     [ -n "$baseline_tree" ] && "$baseline_tree/etc/codeVersion" -binaries | sed 's/^/baseline binaries: /'
