@@ -249,6 +249,7 @@ void cdc_context_destroy(cdc_context *ctx)
     free(ctx->facet_offsets);
     free(ctx->facet_items);
     free(ctx->facet_item_same);
+    free(ctx->facet_plane);
     free(ctx->bin_offsets);
     free(ctx->bin_cells);
     free(ctx->stamp);

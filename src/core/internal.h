@@ -90,6 +90,8 @@ struct cdc_context {
     int32_t facet_nbin[3];
     int32_t *facet_offsets, *facet_items;
     uint8_t *facet_item_same; /* per item of a bin: its facet lies in the previous item's plane */
+    int32_t *facet_plane;     /* per facet: its plane's number (a run of coplanar facets in facet order
+                               * shares one), so a query skips the faces of a plane it has taken */
 
     /* spatial bins for the location fallback, built on first need */
     int bins_built;
@@ -209,8 +211,8 @@ cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radi
 cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t start, int seed_only,
                                  double radius, cdc_ivec *cells);
 
-/* The local cell whose bounding box is nearest to x, if within `reach` (else -1): where the
- * searches for a ghost particle start. */
+/* The local cell whose bounding box is nearest to x, if within `reach` (else -1; of equally near
+ * cells the smallest index): where the searches for a ghost particle start. */
 cdc_status cdc_nearest_cell(cdc_context *ctx, const double x[3], double reach, int32_t *cell);
 
 /* The mirror planes among the wall facets near x, in place: nearest first, a facet is kept unless

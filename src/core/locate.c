@@ -171,22 +171,26 @@ cdc_status cdc_locate_point(cdc_context *ctx, const double p[3], int32_t hint, i
     return CDC_OK;
 }
 
-cdc_status cdc_nearest_cell(cdc_context *ctx, const double x[3], double reach, int32_t *cell)
+/* The range of bins within s of x along each axis (s_d = s plus a few of the hairs build_bins shrinks
+ * boxes by, so a box that reaches x - s is in); 0 when that box misses the grid. */
+static int bin_range(const cdc_context *ctx, const double x[3], double s, int32_t lo[3], int32_t hi[3])
 {
-    *cell = -1;
-    if (!ctx->bins_built) {
-        cdc_status st = build_bins(ctx);
-        if (st != CDC_OK) return st;
-    }
-    int32_t lo[3], hi[3];
     for (int d = 0; d < 3; ++d) {
-        lo[d] = (int32_t)floor((x[d] - reach - ctx->bin_lo[d]) / ctx->bin_size[d]);
-        hi[d] = (int32_t)floor((x[d] + reach - ctx->bin_lo[d]) / ctx->bin_size[d]);
+        const double sd = s + 4e-9 * ctx->bin_size[d];
+        lo[d] = (int32_t)floor((x[d] - sd - ctx->bin_lo[d]) / ctx->bin_size[d]);
+        hi[d] = (int32_t)floor((x[d] + sd - ctx->bin_lo[d]) / ctx->bin_size[d]);
         if (lo[d] < 0) lo[d] = 0;
         if (hi[d] >= ctx->nbin[d]) hi[d] = ctx->nbin[d] - 1;
-        if (lo[d] > hi[d]) return CDC_OK; /* the sphere misses this mesh's box */
+        if (lo[d] > hi[d]) return 0;
     }
-    double best = reach * reach;
+    return 1;
+}
+
+/* The cells of the bins lo..hi nearer to x than *best (squared distance to their bounding boxes), or
+ * as near with a smaller index: *best and *cell updated. */
+static void nearest_in_bins(const cdc_context *ctx, const double x[3], const int32_t lo[3], const int32_t hi[3],
+                            double *best, int32_t *cell)
+{
     for (int32_t k = lo[2]; k <= hi[2]; ++k)
         for (int32_t j = lo[1]; j <= hi[1]; ++j)
             for (int32_t i = lo[0]; i <= hi[0]; ++i) {
@@ -199,11 +203,36 @@ cdc_status cdc_nearest_cell(cdc_context *ctx, const double x[3], double reach, i
                         const double e = x[d] < bb[d] ? bb[d] - x[d] : (x[d] > bb[3 + d] ? x[d] - bb[3 + d] : 0.0);
                         d2 += e * e;
                     }
-                    if (d2 <= best) {
-                        best = d2;
+                    if (d2 < *best || (d2 == *best && (*cell < 0 || c < *cell))) {
+                        *best = d2;
                         *cell = c;
                     }
                 }
             }
+}
+
+cdc_status cdc_nearest_cell(cdc_context *ctx, const double x[3], double reach, int32_t *cell)
+{
+    *cell = -1;
+    if (!ctx->bins_built) {
+        cdc_status st = build_bins(ctx);
+        if (st != CDC_OK) return st;
+    }
+    int32_t lo[3], hi[3];
+    if (!bin_range(ctx, x, reach, lo, hi)) return CDC_OK; /* the sphere misses this mesh's box */
+    /* A first guess from the bin of the range nearest to x (a ghost just across a processor boundary:
+     * the cells on this side of it): the distance it gives bounds the search, so the scan covers the
+     * bins within that distance instead of the whole reach (the ghosts' search was most of the locate
+     * stage on 2 ranks). Any cell nearer than the guess lies in those bins, and ties go to the smaller
+     * index, so the answer is the cell a scan of the whole reach gives. */
+    int32_t g[3];
+    for (int d = 0; d < 3; ++d) {
+        const int32_t b = (int32_t)floor((x[d] - ctx->bin_lo[d]) / ctx->bin_size[d]);
+        g[d] = b < lo[d] ? lo[d] : (b > hi[d] ? hi[d] : b);
+    }
+    double best = reach * reach;
+    nearest_in_bins(ctx, x, g, g, &best, cell);
+    if (*cell >= 0 && !bin_range(ctx, x, sqrt(best) * (1.0 + 1e-12), lo, hi)) return CDC_OK;
+    nearest_in_bins(ctx, x, lo, hi, &best, cell);
     return CDC_OK;
 }

@@ -1629,6 +1629,102 @@ static void check_candidates(double shear)
     box_mesh_destroy(&b);
 }
 
+/* The ghosts' start cell (cdc_nearest_cell: a first guess, then the bins within its distance) against
+ * every cell of the mesh: the nearest bounding box within the reach, ties to the smaller index; for
+ * points inside, just outside and far outside a box and a sheared mesh, and points on cell edges. */
+static void check_nearest_cell(double shear)
+{
+    box_mesh b;
+    const double lo[3] = {0, 0, 0}, hi[3] = {1.2, 1.0, 0.8};
+    CHECK(box_mesh_create(&b, 12, 10, 8, lo, hi, ALL_WALLS, shear) == 0, "mesh");
+    cdc_context *ctx = NULL;
+    CHECK(cdc_context_create(&b.mesh, &ctx) == CDC_OK, "context: %s", cdc_create_error());
+    unsigned long long s = 23;
+    int found = 0, wrong = 0;
+    for (int t = 0; t < 4000; ++t) {
+        double x[3] = {-0.4 + 2.0 * rnd(&s) + shear * 0.5, -0.4 + 1.8 * rnd(&s), -0.4 + 1.6 * rnd(&s)};
+        if (t % 4 == 0) x[1] = 0.1 * (double)(int)(10.0 * x[1]); /* on a cell edge: ties */
+        if (t % 8 == 0) x[2] = 0.1 * (double)(int)(10.0 * x[2]);
+        const double reach = 0.02 + 0.4 * rnd(&s);
+        int32_t cell = -2;
+        CHECK(cdc_nearest_cell(ctx, x, reach, &cell) == CDC_OK, "nearest: %s", cdc_last_error(ctx));
+        double best = reach * reach;
+        int32_t want = -1;
+        for (int32_t c = 0; c < b.mesh.n_cells; ++c) {
+            const double *bb = ctx->cell_bbox + 6 * (size_t)c;
+            double d2 = 0.0;
+            for (int d = 0; d < 3; ++d) {
+                const double e = x[d] < bb[d] ? bb[d] - x[d] : (x[d] > bb[3 + d] ? x[d] - bb[3 + d] : 0.0);
+                d2 += e * e;
+            }
+            if (d2 < best || (d2 == best && (want < 0 || c < want))) {
+                best = d2;
+                want = c;
+            }
+        }
+        found += want >= 0;
+        wrong += cell != want;
+    }
+    CHECK(found > 1000 && found < 4000, "shear %g: %d of 4000 points had a cell within reach", shear, found);
+    CHECK(wrong == 0, "shear %g: %d of 4000 points got another cell than the scan of every cell", shear, wrong);
+    cdc_context_destroy(ctx);
+    box_mesh_destroy(&b);
+}
+
+static void test_nearest_cell_box(void) { check_nearest_cell(0.0); }
+static void test_nearest_cell_sheared(void) { check_nearest_cell(0.5); }
+
+/* The wall planes near a point (cdc_wall_planes_near: binned facets, a plane's faces skipped once it is
+ * taken) against every facet of the mesh: the same planes (normal and offset) for points all over a
+ * box and a sheared mesh with walls all round, and kernel radii from a tenth of a cell to four cells. */
+static void check_wall_planes(double shear)
+{
+    box_mesh b;
+    const double lo[3] = {0, 0, 0}, hi[3] = {1.2, 1.0, 0.8};
+    CHECK(box_mesh_create(&b, 12, 10, 8, lo, hi, ALL_WALLS, shear) == 0, "mesh");
+    cdc_context *ctx = NULL;
+    CHECK(cdc_context_create(&b.mesh, &ctx) == CDC_OK, "context: %s", cdc_create_error());
+    unsigned long long s = 31;
+    int differ = 0, with_planes = 0;
+    for (int t = 0; t < 3000; ++t) {
+        const double y = rnd(&s);
+        const double x[3] = {rnd(&s) * 1.2 + shear * y, y, rnd(&s) * 0.8};
+        const double radius = 0.01 + 0.4 * rnd(&s);
+        cdc_plane got[CDC_MAX_WALL_FACETS], want[CDC_MAX_WALL_FACETS];
+        int n_got = 0, n_want = 0;
+        CHECK(cdc_wall_planes_near(ctx, x, radius, got, &n_got) == CDC_OK, "planes: %s", cdc_last_error(ctx));
+        for (int32_t f = 0; f < ctx->n_facets; ++f) {
+            const cdc_facet *fc = ctx->facets + f;
+            if (cdc_dist2(fc->owner, x) > radius * radius * CDC_RADIUS_SLACK || -cdc_plane_offset(&fc->plane, x) >= radius)
+                continue;
+            int known = 0;
+            for (int p = 0; p < n_want && !known; ++p)
+                known = fc->plane.normal[0] * want[p].normal[0] + fc->plane.normal[1] * want[p].normal[1] +
+                        fc->plane.normal[2] * want[p].normal[2] > 1.0 - 1e-9 &&
+                        fabs(cdc_plane_offset(want + p, fc->plane.origin)) <= 1e-9 * radius;
+            if (!known) want[n_want++] = fc->plane;
+        }
+        int same = n_got == n_want;
+        for (int p = 0; p < n_want && same; ++p) {
+            int match = 0;
+            for (int q = 0; q < n_got && !match; ++q)
+                match = want[p].normal[0] * got[q].normal[0] + want[p].normal[1] * got[q].normal[1] +
+                        want[p].normal[2] * got[q].normal[2] > 1.0 - 1e-12 &&
+                        fabs(cdc_plane_offset(got + q, want[p].origin)) <= 1e-12;
+            same = match;
+        }
+        differ += !same;
+        with_planes += n_want > 0;
+    }
+    CHECK(with_planes > 1500, "shear %g: only %d of 3000 points near a wall", shear, with_planes);
+    CHECK(differ == 0, "shear %g: %d of 3000 points got other planes than the pass over every facet", shear, differ);
+    cdc_context_destroy(ctx);
+    box_mesh_destroy(&b);
+}
+
+static void test_wall_planes_box(void) { check_wall_planes(0.0); }
+static void test_wall_planes_sheared(void) { check_wall_planes(0.5); }
+
 static void test_candidates_box(void) { check_candidates(0.0); }
 static void test_candidates_sheared(void) { check_candidates(0.5); }
 
@@ -1821,6 +1917,10 @@ int main(void)
     run("partly_outside_processor", test_partly_outside_processor);
     run("candidates_box", test_candidates_box);
     run("candidates_sheared", test_candidates_sheared);
+    run("nearest_cell_box", test_nearest_cell_box);
+    run("nearest_cell_sheared", test_nearest_cell_sheared);
+    run("wall_planes_box", test_wall_planes_box);
+    run("wall_planes_sheared", test_wall_planes_sheared);
     run("method_registry", test_method_registry);
     printf("%d passed, %d failed\n", n_pass, n_fail);
     return n_fail ? 1 : 0;
