@@ -248,7 +248,6 @@ void cdc_context_destroy(cdc_context *ctx)
     free(ctx->facets);
     free(ctx->facet_offsets);
     free(ctx->facet_items);
-    free(ctx->facet_item_same);
     free(ctx->facet_plane);
     free(ctx->bin_offsets);
     free(ctx->bin_cells);

@@ -89,7 +89,6 @@ struct cdc_context {
     double facet_lo[3], facet_bin;
     int32_t facet_nbin[3];
     int32_t *facet_offsets, *facet_items;
-    uint8_t *facet_item_same; /* per item of a bin: its facet lies in the previous item's plane */
     int32_t *facet_plane;     /* per facet: its plane's number (a run of coplanar facets in facet order
                                * shares one), so a query skips the faces of a plane it has taken */
 

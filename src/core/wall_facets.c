@@ -37,11 +37,9 @@ static cdc_status store_facets(cdc_context *ctx, int32_t n, const double *centre
     free(ctx->facets);
     free(ctx->facet_offsets);
     free(ctx->facet_items);
-    free(ctx->facet_item_same);
     free(ctx->facet_plane);
     ctx->facets = NULL;
     ctx->facet_offsets = ctx->facet_items = ctx->facet_plane = NULL;
-    ctx->facet_item_same = NULL;
     ctx->n_facets = 0;
     if (n <= 0) return CDC_OK;
 
@@ -62,7 +60,6 @@ static cdc_status store_facets(cdc_context *ctx, int32_t n, const double *centre
         }
         gap += sqrt(cdc_dist2(q->plane.origin, q->owner));
     }
-    ctx->n_facets = n;
     /* bins of about two wall cells (the owner is half a cell from its face), fewer if that would
      * make more bins than a few per facet */
     double h = 4.0 * gap / n;
@@ -80,9 +77,8 @@ static cdc_status store_facets(cdc_context *ctx, int32_t n, const double *centre
     const size_t nb = (size_t)ctx->facet_nbin[0] * (size_t)ctx->facet_nbin[1] * (size_t)ctx->facet_nbin[2];
     ctx->facet_offsets = calloc(nb + 1, sizeof(int32_t));
     ctx->facet_items = malloc((size_t)n * sizeof(int32_t));
-    ctx->facet_item_same = malloc((size_t)n);
     ctx->facet_plane = malloc((size_t)n * sizeof(int32_t));
-    if (!ctx->facet_offsets || !ctx->facet_items || !ctx->facet_item_same || !ctx->facet_plane)
+    if (!ctx->facet_offsets || !ctx->facet_items || !ctx->facet_plane)
         return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
     size_t *bin = malloc((size_t)n * sizeof *bin);
     if (!bin) return cdc_fail(ctx, CDC_ERR_NOMEM, "wall facets: out of memory");
@@ -96,29 +92,22 @@ static cdc_status store_facets(cdc_context *ctx, int32_t n, const double *centre
     for (size_t b = nb; b > 0; --b) ctx->facet_offsets[b] = ctx->facet_offsets[b - 1];
     ctx->facet_offsets[0] = 0;
     free(bin);
-    /* Plane numbers: a facet in the plane of the first facet of the previous facet's run (to 1e-12
-     * of a bin, as below) continues that run; a flat wall met again later gets a new number, which
-     * costs a query only the skip, not a plane. */
+    /* Plane numbers: a facet with the same normal (to the bit) as the first facet of the previous
+     * facet's run, its centre within 1e-12 of a bin of that facet's plane, continues the run; a flat
+     * wall met again later gets a new number, which costs a query only the skip, not a plane. Two
+     * facets of one run are then within 2e-12 h of each other's plane: one plane for a query of
+     * radius 2e-3 h or more (cdc_wall_planes_near's 1e-9 of the radius), which then tests each
+     * plane's faces until one is taken and skips the rest. */
     for (int32_t f = 0, first = 0, number = 0; f < n; ++f) {
         const cdc_plane *a = &ctx->facets[first].plane, *c = &ctx->facets[f].plane;
-        const double dn = a->normal[0] * c->normal[0] + a->normal[1] * c->normal[1] + a->normal[2] * c->normal[2];
-        if (f > 0 && !(dn > 1.0 - 1e-12 && fabs(cdc_plane_offset(a, c->origin)) <= 1e-12 * h)) {
+        const int same_normal = a->normal[0] == c->normal[0] && a->normal[1] == c->normal[1] && a->normal[2] == c->normal[2];
+        if (f > 0 && !(same_normal && fabs(cdc_plane_offset(a, c->origin)) <= 1e-12 * h)) {
             first = f;
             ++number;
         }
         ctx->facet_plane[f] = number;
     }
-    /* A bin's items come in facet order, so the faces of one flat wall follow each other: mark those
-     * in the plane of the item before (to 1e-12 of a bin, far inside the 1e-9 of a kernel's reach
-     * that cdc_wall_planes_near calls one plane), so that a query tests each plane once per bin. */
-    for (size_t b = 0; b < nb; ++b)
-        for (int32_t q = ctx->facet_offsets[b]; q < ctx->facet_offsets[b + 1]; ++q) {
-            ctx->facet_item_same[q] = 0;
-            if (q == ctx->facet_offsets[b]) continue;
-            const cdc_plane *a = &ctx->facets[ctx->facet_items[q - 1]].plane, *c = &ctx->facets[ctx->facet_items[q]].plane;
-            const double dn = a->normal[0] * c->normal[0] + a->normal[1] * c->normal[1] + a->normal[2] * c->normal[2];
-            ctx->facet_item_same[q] = dn > 1.0 - 1e-12 && fabs(cdc_plane_offset(a, c->origin)) <= 1e-12 * h;
-        }
+    ctx->n_facets = n; /* only now: a query never meets a half-made set after an allocation failed */
     return CDC_OK;
 }
 
@@ -164,24 +153,21 @@ cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radi
         b1[d] = bin_of(ctx, d, x[d] + radius);
     }
     const double r2 = radius * radius * CDC_RADIUS_SLACK;
-    int32_t known_numbers[CDC_MAX_WALL_FACETS]; /* the plane numbers of the planes among planes[] */
+    int32_t known_numbers[CDC_MAX_WALL_FACETS]; /* the plane numbers of the planes taken */
     int n_known = 0;
+    const int skip_by_number = radius >= 2e-3 * ctx->facet_bin; /* see store_facets; else every face is tested */
     for (int32_t k = b0[2]; k <= b1[2]; ++k)
         for (int32_t j = b0[1]; j <= b1[1]; ++j)
             for (int32_t i = b0[0]; i <= b1[0]; ++i) {
                 const size_t b = bin_index(ctx, i, j, k);
-                int plane_settled = 0; /* the previous item's plane is already among the planes */
                 for (int32_t q = ctx->facet_offsets[b]; q < ctx->facet_offsets[b + 1]; ++q) {
-                    if (plane_settled && ctx->facet_item_same[q]) continue; /* the same answer again */
                     /* a face of a plane taken already changes nothing, whatever its owner's distance */
                     const int32_t number = ctx->facet_plane[ctx->facet_items[q]];
-                    plane_settled = 0;
-                    for (int p = 0; p < n_known && !plane_settled; ++p) plane_settled = known_numbers[p] == number;
-                    if (plane_settled) continue;
+                    int taken = 0;
+                    for (int p = 0; p < n_known && !taken; ++p) taken = known_numbers[p] == number;
+                    if (taken) continue;
                     const cdc_facet *fc = ctx->facets + ctx->facet_items[q];
                     if (cdc_dist2(fc->owner, x) > r2 || -cdc_plane_offset(&fc->plane, x) >= radius) continue;
-                    plane_settled = 1; /* taken below, or known already */
-                    if (n_known < CDC_MAX_WALL_FACETS) known_numbers[n_known++] = number;
                     int known = 0; /* the same plane as one already taken (a flat wall's faces) */
                     for (int p = 0; p < *n_planes && !known; ++p) {
                         const cdc_plane *o = planes + p;
@@ -196,6 +182,7 @@ cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radi
                                         "(a wall more finely faceted than the kernel can mirror: a larger mesh cell "
                                         "at the wall, a smaller kernel, or wallMirror false)",
                                         CDC_MAX_WALL_FACETS, radius, x[0], x[1], x[2]);
+                    if (skip_by_number) known_numbers[n_known++] = number; /* one per plane: room enough */
                     planes[(*n_planes)++] = fc->plane;
                 }
             }

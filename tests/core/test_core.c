@@ -1674,27 +1674,27 @@ static void check_nearest_cell(double shear)
 static void test_nearest_cell_box(void) { check_nearest_cell(0.0); }
 static void test_nearest_cell_sheared(void) { check_nearest_cell(0.5); }
 
-/* The wall planes near a point (cdc_wall_planes_near: binned facets, a plane's faces skipped once it is
- * taken) against every facet of the mesh: the same planes (normal and offset) for points all over a
- * box and a sheared mesh with walls all round, and kernel radii from a tenth of a cell to four cells. */
-static void check_wall_planes(double shear)
+/* Planes of cdc_wall_planes_near against a pass over every facet (the bins' order, no skips), for `count` points of the box
+ * [lo, hi] (x sheared by shear * y) and radii up to max_radius: the number of points whose planes
+ * (normal, offset) differ; *near_wall counts the points with any plane. */
+static int wall_planes_differ(cdc_context *ctx, unsigned long long seed, int count, const double lo[3],
+                              const double hi[3], double shear, double max_radius, int *near_wall)
 {
-    box_mesh b;
-    const double lo[3] = {0, 0, 0}, hi[3] = {1.2, 1.0, 0.8};
-    CHECK(box_mesh_create(&b, 12, 10, 8, lo, hi, ALL_WALLS, shear) == 0, "mesh");
-    cdc_context *ctx = NULL;
-    CHECK(cdc_context_create(&b.mesh, &ctx) == CDC_OK, "context: %s", cdc_create_error());
-    unsigned long long s = 31;
-    int differ = 0, with_planes = 0;
-    for (int t = 0; t < 3000; ++t) {
-        const double y = rnd(&s);
-        const double x[3] = {rnd(&s) * 1.2 + shear * y, y, rnd(&s) * 0.8};
-        const double radius = 0.01 + 0.4 * rnd(&s);
+    unsigned long long s = seed;
+    int differ = 0;
+    *near_wall = 0;
+    for (int t = 0; t < count; ++t) {
+        const double y = lo[1] + (hi[1] - lo[1]) * rnd(&s);
+        const double x[3] = {lo[0] + (hi[0] - lo[0]) * rnd(&s) + shear * y, y, lo[2] + (hi[2] - lo[2]) * rnd(&s)};
+        const double radius = 0.001 + max_radius * rnd(&s);
         cdc_plane got[CDC_MAX_WALL_FACETS], want[CDC_MAX_WALL_FACETS];
         int n_got = 0, n_want = 0;
-        CHECK(cdc_wall_planes_near(ctx, x, radius, got, &n_got) == CDC_OK, "planes: %s", cdc_last_error(ctx));
-        for (int32_t f = 0; f < ctx->n_facets; ++f) {
-            const cdc_facet *fc = ctx->facets + f;
+        if (cdc_wall_planes_near(ctx, x, radius, got, &n_got) != CDC_OK) return count + 1;
+        /* every facet, in the order of the bins (the greedy merge below keeps the first facet of a
+         * plane, and which facet is first decides it for nearly coplanar ones) */
+        const size_t n_bins = (size_t)ctx->facet_nbin[0] * (size_t)ctx->facet_nbin[1] * (size_t)ctx->facet_nbin[2];
+        for (int32_t q = 0; q < ctx->facet_offsets[n_bins] && n_want < CDC_MAX_WALL_FACETS; ++q) {
+            const cdc_facet *fc = ctx->facets + ctx->facet_items[q];
             if (cdc_dist2(fc->owner, x) > radius * radius * CDC_RADIUS_SLACK || -cdc_plane_offset(&fc->plane, x) >= radius)
                 continue;
             int known = 0;
@@ -1714,10 +1714,61 @@ static void check_wall_planes(double shear)
             same = match;
         }
         differ += !same;
-        with_planes += n_want > 0;
+        *near_wall += n_want > 0;
     }
-    CHECK(with_planes > 1500, "shear %g: only %d of 3000 points near a wall", shear, with_planes);
+    return differ;
+}
+
+/* The wall planes near a point (binned facets, a plane's faces skipped once it is taken) against a
+ * pass over every facet: a box and a sheared mesh with walls all round, their facets as the mesh
+ * gives them (one run per wall) and shuffled (a wall's faces scattered through the list), and a
+ * pair of nearly coplanar facets (a normal tilted by 1e-6: two planes, not one). */
+static void check_wall_planes(double shear)
+{
+    box_mesh b;
+    const double lo[3] = {0, 0, 0}, hi[3] = {1.2, 1.0, 0.8};
+    CHECK(box_mesh_create(&b, 12, 10, 8, lo, hi, ALL_WALLS, shear) == 0, "mesh");
+    cdc_context *ctx = NULL;
+    CHECK(cdc_context_create(&b.mesh, &ctx) == CDC_OK, "context: %s", cdc_create_error());
+    int near_wall = 0;
+    int differ = wall_planes_differ(ctx, 31, 3000, lo, hi, shear, 0.4, &near_wall);
+    CHECK(near_wall > 1500, "shear %g: only %d of 3000 points near a wall", shear, near_wall);
     CHECK(differ == 0, "shear %g: %d of 3000 points got other planes than the pass over every facet", shear, differ);
+
+    /* the same facets shuffled */
+    const int32_t n = ctx->n_facets;
+    double *buf = malloc(9 * (size_t)n * sizeof *buf);
+    int32_t *order = malloc((size_t)n * sizeof *order);
+    unsigned long long s = 5;
+    for (int32_t f = 0; f < n; ++f) order[f] = f;
+    for (int32_t f = n - 1; f > 0; --f) {
+        const int32_t g = (int32_t)(rnd(&s) * (f + 1)) % (f + 1), tmp = order[f];
+        order[f] = order[g];
+        order[g] = tmp;
+    }
+    for (int32_t f = 0; f < n; ++f)
+        for (int d = 0; d < 3; ++d) {
+            const cdc_facet *fc = ctx->facets + order[f];
+            buf[3 * (size_t)f + d] = fc->plane.origin[d];
+            buf[3 * (size_t)(n + f) + d] = fc->plane.normal[d];
+            buf[3 * (size_t)(2 * n + f) + d] = fc->owner[d];
+        }
+    CHECK(cdc_context_set_wall_facets(ctx, n, buf, buf + 3 * (size_t)n, buf + 6 * (size_t)n) == CDC_OK, "set");
+    differ = wall_planes_differ(ctx, 37, 3000, lo, hi, shear, 0.8, &near_wall);
+    CHECK(differ == 0, "shear %g, shuffled facets: %d of 3000 points got other planes", shear, differ);
+    free(buf);
+    free(order);
+
+    /* two facets at z = 0, the second's normal tilted by 1e-6, in one run of the list: the second
+     * lies in the first's plane, not the first in the second's, and it is met first (its owner's
+     * bin): two planes (a plane number that took both for one would give one) */
+    const double th = -1e-6;
+    const double centres[6] = {0.3, 0, 0, 0, 0, 0}, areas[6] = {0, 0, -1, sin(th), 0, -cos(th)},
+                 owners[6] = {0.3, 0, 0.05, 0, 0, 0.05};
+    CHECK(cdc_context_set_wall_facets(ctx, 2, centres, areas, owners) == CDC_OK, "set");
+    const double plo[3] = {0, 0, 0.01}, phi[3] = {0.3, 0.1, 0.2};
+    differ = wall_planes_differ(ctx, 41, 500, plo, phi, 0.0, 0.4, &near_wall);
+    CHECK(near_wall > 100 && differ == 0, "tilted pair: %d of 500 points differ (%d near)", differ, near_wall);
     cdc_context_destroy(ctx);
     box_mesh_destroy(&b);
 }
