@@ -236,6 +236,17 @@ static inline double cdc_dist2(const double a[3], const double b[3])
     return dx * dx + dy * dy + dz * dz;
 }
 
+/* Squared distance from x to the box bb = {lo[3], hi[3]} (a cell's bounding box); 0 inside. */
+static inline double cdc_box_dist2(const double bb[6], const double x[3])
+{
+    double d2 = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        const double e = x[d] < bb[d] ? bb[d] - x[d] : (x[d] > bb[3 + d] ? x[d] - bb[3 + d] : 0.0);
+        d2 += e * e;
+    }
+    return d2;
+}
+
 /* The id of particle i in messages: its DEM id, or its index. */
 static inline int64_t cdc_particle_id(const cdc_particles *p, int32_t i) { return p->id ? p->id[i] : (int64_t)i; }
 

@@ -197,12 +197,7 @@ static void nearest_in_bins(const cdc_context *ctx, const double x[3], const int
                 const size_t b = ((size_t)k * ctx->nbin[1] + j) * ctx->nbin[0] + i;
                 for (int32_t q = ctx->bin_offsets[b]; q < ctx->bin_offsets[b + 1]; ++q) {
                     const int32_t c = ctx->bin_cells[q];
-                    const double *bb = ctx->cell_bbox + 6 * (size_t)c;
-                    double d2 = 0.0;
-                    for (int d = 0; d < 3; ++d) {
-                        const double e = x[d] < bb[d] ? bb[d] - x[d] : (x[d] > bb[3 + d] ? x[d] - bb[3 + d] : 0.0);
-                        d2 += e * e;
-                    }
+                    const double d2 = cdc_box_dist2(ctx->cell_bbox + 6 * (size_t)c, x);
                     if (d2 < *best || (d2 == *best && (*cell < 0 || c < *cell))) {
                         *best = d2;
                         *cell = c;

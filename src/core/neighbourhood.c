@@ -18,13 +18,7 @@ static inline int accepts(const cdc_context *ctx, enum accept_kind kind, int32_t
 {
     if (kind == CENTRE_WITHIN)
         return cdc_dist2(ctx->mesh->cell_centres + 3 * (size_t)c, x) <= radius * radius * CDC_RADIUS_SLACK;
-    const double *bb = ctx->cell_bbox + 6 * (size_t)c;
-    double d2 = 0.0;
-    for (int d = 0; d < 3; ++d) {
-        const double e = x[d] < bb[d] ? bb[d] - x[d] : (x[d] > bb[3 + d] ? x[d] - bb[3 + d] : 0.0);
-        d2 += e * e;
-    }
-    return d2 < radius * radius;
+    return cdc_box_dist2(ctx->cell_bbox + 6 * (size_t)c, x) < radius * radius;
 }
 
 /* Breadth-first over the face neighbours: the cells accepted form the neighbourhood; the search
