@@ -1,15 +1,15 @@
 # noMomentumPredictor: no momentum predictor (PIMPLE momentumPredictor no): the gas velocity of a step
 # comes from the pressure corrector alone (HbyA of the old velocity), the U equation assembled but not
 # solved. A cost ingredient of issue 44: the Mueller demo's time loop at 0.905 of the tutorial's on 2
-# ranks (quiet machine, two pairs alternated, 2026-12-07 12:03-12:08 UTC: 24.85, 24.94 s with the
-# predictor, 22.46, 22.59 s without; /work/logs/ab_mp_quiet.log, main at a1d4e4c).
+# ranks (quiet machine, two pairs alternated, 2026-12-07 12:00-12:02 UTC: 24.85, 24.94 s with the
+# predictor, 22.46, 22.59 s without; main at a1d4e4c, the demo run by Allrun -mode demo -np 2 with the two settings).
 # Why it may leave the bed alone (written before the run): where there are particles the momentum
 # matrix's diagonal is dominated by the implicit drag (Ksl/rho against 1/dt), so the gas velocity is
 # set by the pressure gradient and the particles' velocity, which the corrector solves for; what the
 # predictor adds is the neighbour terms (convection, viscosity) taken at the new velocity in place of
 # the old, a change of the order of the step's Courant number (0.3-0.8) times their small share. The
 # CFD step is unchanged, and each step still ends with a flux that satisfies continuity.
-# The rule that decides (written before the run, 2026-12-07 12:10 UTC, issue 44; as oneCorrector's):
+# The rule that decides (written before the run, 2026-12-07 12:03 UTC, issue 44; as oneCorrector's):
 # the run goes to 10 s on one rank with main's build at a1d4e4c (the tutorial's one corrector and U to
 # 1e-6, which no longer matters: U is not solved), cut into the four 2 s windows 2-4 ... 8-10 s
 # (validation/muller/windows.py RUN 2 10 4), and is judged by samePhysics.py -windows against the
