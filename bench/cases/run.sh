@@ -18,7 +18,12 @@
 # ratios.md (the same as tables, with the 2-rank speed-ups of the run, of its DEM stage and of its
 # fluid stage) and run_info.txt (command, commit, load).
 #
-#   bench/cases/run.sh [-cases "muller khan"] [-np "1 2"] [-stretch S] [-khanState T] [-baselineTree DIR]
+#   bench/cases/run.sh [-cases "muller khan"] [-np "1 2"] [-pairs N] [-stretch S] [-khanState T] [-baselineTree DIR]
+#
+# -pairs N: N baseline-tutorial pairs per case and rank count, run in turn (baseline, tutorial,
+#   baseline, ...; default 1): the ratio is taken pair by pair and its median reported with the
+#   smallest and largest, because on a shared machine one pair's ratio can move by 0.1 or more
+#   (2026-12-07: 0.52, 0.62 and 0.37 for the Mueller demo on 2 ranks within ten minutes)
 #
 # -baselineTree DIR: the baseline rows run with the binaries of another built tree (a clone at the
 #   commit before a code change), the tutorial rows with this tree's: the ratio is then the cost
@@ -35,14 +40,15 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
 . "$here/../solverLog.sh"   # run_solver, stage timers, loop wall time
-cases="muller khan"; nps="1 2"; stretch=0.1; khan_t=3; baseline_tree=
+cases="muller khan"; nps="1 2"; pairs=1; stretch=0.1; khan_t=3; baseline_tree=
 while [ $# -gt 0 ]; do
-    case "$1" in -cases|-np|-stretch|-khanState|-baselineTree)
+    case "$1" in -cases|-np|-pairs|-stretch|-khanState|-baselineTree)
         [ $# -ge 2 ] || { echo "bench/cases: $1 needs a value (see -h)" >&2; exit 2; } ;;
     esac
     case "$1" in
         -cases) cases="$2"; shift 2 ;;
         -np) nps="$2"; shift 2 ;;
+        -pairs) pairs="$2"; shift 2 ;;
         -stretch) stretch="$2"; shift 2 ;;
         -khanState) khan_t="$2"; shift 2 ;;
         -baselineTree) baseline_tree="$2"; shift 2 ;;
@@ -56,6 +62,7 @@ done
 for np in $nps; do
     case "$np" in 1|2) ;; *) echo "bench/cases: np $np: 1 or 2 ranks" >&2; exit 2 ;; esac
 done
+[[ "$pairs" =~ ^[1-9][0-9]*$ ]] || { echo "bench/cases: -pairs '$pairs' must be a whole number >= 1" >&2; exit 2; }
 if [ -n "$baseline_tree" ]; then
     [ -x "$baseline_tree/platforms/$WM_OPTIONS/bin/coarseDemFoam" ] && [ -f "$baseline_tree/etc/bashrc" ] ||
         { echo "bench/cases: -baselineTree $baseline_tree is not a built tree (no platforms/$WM_OPTIONS/bin/coarseDemFoam)" >&2; exit 2; }
@@ -228,15 +235,17 @@ for c in $cases; do
         if [[ " $nps " == *" 1 "* ]]; then khan_neighbour || exit 1; fi
     fi
     for np in $nps; do
-        for s in baseline tutorial; do
-            "$c" "$s" "$np" || exit 1
+        for ((i = 1; i <= pairs; ++i)); do
+            for s in baseline tutorial; do
+                "$c" "$s" "$np" || exit 1
+            done
         done
     done
 done
 
 /usr/bin/python3 "$here/ratios.py" "$csv" "$results/cases.csv" > "$results/ratios.md" || exit 1
 {
-    echo "command: bench/cases/run.sh -cases \"$cases\" -np \"$nps\" -stretch $stretch -khanState $khan_t${baseline_tree:+ -baselineTree $baseline_tree}"
+    echo "command: bench/cases/run.sh -cases \"$cases\" -np \"$nps\" -pairs $pairs -stretch $stretch -khanState $khan_t${baseline_tree:+ -baselineTree $baseline_tree}"
     echo "commit: $code_version"
     [ -n "$baseline_tree" ] && echo "baseline rows: the binaries of $baseline_tree at $build_baseline"
     # which binaries ran (checksum, build time, path): a tree's commit need not be the one it was built at

@@ -34,6 +34,23 @@ refused cases-np "np 3: 1 or 2 ranks" "$cases" -np "1 3"
 refused cases-stretch "'-0.1' must be a time in s > 0" "$cases" -stretch -0.1
 refused cases-novalue "-cases needs a value" "$cases" -cases
 refused cases-option "unknown option '-method'" "$cases" -method divided
+refused cases-pairs "-pairs '0' must be a whole number >= 1" "$cases" -pairs 0
+# the cost table pairs the k-th baseline run with the k-th tutorial run and takes the median ratio
+cat > "$work/runs.csv" <<'RUNS'
+case,settings,np,simulated_s,wall_s,wall_per_simulated_s,dem_s,fluid_s,coupling_s,build
+muller,baseline,2,0.1,40,400,4,4,2,x
+muller,tutorial,2,0.1,24,240,2,2,1,x
+muller,baseline,2,0.1,50,500,4,4,2,x
+muller,tutorial,2,0.1,20,200,2,2,1,x
+muller,baseline,2,0.1,40,400,4,4,2,x
+muller,tutorial,2,0.1,18,180,2,2,1,x
+RUNS
+/usr/bin/python3 "$top/bench/cases/ratios.py" "$work/runs.csv" "$work/cases.csv" > /dev/null 2>&1
+if [ "$(cut -d, -f6,13-15 "$work/cases.csv" | tail -1)" = "0.4500,3,0.4000,0.6000" ]; then
+    result ok "bench/cases ratios.py: pairs in turn, median ratio 0.45 of 0.60, 0.40, 0.45"
+else
+    result fail "bench/cases ratios.py: expected ratio 0.4500 over 3 pairs (0.4000-0.6000), got: $(tail -1 "$work/cases.csv")"
+fi
 refused cases-baseline "is not a built tree" "$cases" -baselineTree "$work"
 refused demstep-case "invalid choice: 'ergun'" /usr/bin/python3 "$top/bench/demStep/collision.py" ergun
 
@@ -53,6 +70,15 @@ if "$kb" -n 1000 -m centre -o "$work/kernels.csv" > "$work/out" 2>&1 && [ "$(wc 
     result ok "kernel_bench -n 1000 -m centre runs and writes one row"
 else
     result fail "kernel_bench -n 1000 -m centre"; sed 's/^/    /' "$work/out" | tail -5
+fi
+
+# bench/kernelReuse: builds and prints a share of identical kernels for one speed, which falls with the speed
+make -s -C "$top/bench/kernelReuse" > "$work/make.log" 2>&1 || { result fail "bench: kernel_reuse does not build"; cat "$work/make.log"; finish; }
+if "$top/bench/kernelReuse/build/kernel_reuse" 0.05 0.3 > "$work/reuse.txt" 2>&1 &&
+   awk -F'|' 'NR == 2 {a = $2 + 0} NR == 3 {b = $2 + 0} END {exit !(NR == 3 && a > b && b > 0 && a < 100)}' "$work/reuse.txt"; then
+    result ok "kernel_reuse: fewer kernels identical at 0.3 than at 0.05 m/s ($(awk -F'|' 'NR > 1 {printf "%s", $2}' "$work/reuse.txt"))"
+else
+    result fail "kernel_reuse 0.05 0.3"; sed 's/^/    /' "$work/reuse.txt" | tail -5
 fi
 
 make -s -C "$top/bench/diffusion" > "$work/make.log" 2>&1 || { result fail "bench: diffusion_fields_bench does not build"; cat "$work/make.log"; finish; }
