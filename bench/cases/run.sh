@@ -14,7 +14,8 @@
 # Written: bench/cases/results/runs.csv (a row per run: case, settings, np, simulated s, wall s of
 # the time loop, wall s per simulated s, the stage timers' seconds: DEM, fluid, coupling (every other
 # stage but the output-only fields), the build: the commit of the tree whose binaries ran it), cases.csv (a row per case and rank count: the baseline's and
-# the tutorial's wall s per simulated s, their ratio, each one's DEM / fluid / coupling shares),
+# the tutorial's wall s per simulated s (medians), their ratio (the median of the pairs'), each one's
+# DEM / fluid / coupling shares, the number of pairs and the smallest and largest pair's ratio),
 # ratios.md (the same as tables, with the 2-rank speed-ups of the run, of its DEM stage and of its
 # fluid stage) and run_info.txt (command, commit, load).
 #

@@ -9,7 +9,7 @@
 # predictor adds is the neighbour terms (convection, viscosity) taken at the new velocity in place of
 # the old, a change of the order of the step's Courant number (0.3-0.8) times their small share. The
 # CFD step is unchanged, and each step still ends with a flux that satisfies continuity.
-# The rule that decides (written before the run, 2026-12-07 12:03 UTC, issue 44; as oneCorrector's):
+# The rule that decides (written before the run, committed 2026-12-07 12:02 UTC in 5397904, issue 44; as oneCorrector's):
 # the run goes to 10 s on one rank with main's build at a1d4e4c (the tutorial's one corrector and U to
 # 1e-6, which no longer matters: U is not solved), cut into the four 2 s windows 2-4 ... 8-10 s
 # (validation/muller/windows.py RUN 2 10 4), and is judged by samePhysics.py -windows against the
