@@ -22,6 +22,7 @@ import math
 import os
 import sys
 
+from ergun import ergun_gradient
 from liquid_bed_references import difelice_cd_chi   # Cd and chi of DiFeliceDrag.C
 
 D, RHO_P, RHO_G, NU, G = 1.2e-3, 1000.0, 1.2, 1.5e-5, 9.81
@@ -53,8 +54,7 @@ def umf_difelice(eps, superficial=True):
 
 
 def umf_ergun(eps):
-    return bisect(lambda U: 150 * (1 - eps) ** 2 * MU * U / (eps ** 3 * D ** 2)
-                  + 1.75 * (1 - eps) * RHO_G * U ** 2 / (eps ** 3 * D) - (1 - eps) * (RHO_P - RHO_G) * G, 1e-6, 10.0)
+    return bisect(lambda U: ergun_gradient(eps, U, D, MU, RHO_G) - (1 - eps) * (RHO_P - RHO_G) * G, 1e-6, 10.0)
 
 
 def umf_wen_yu():

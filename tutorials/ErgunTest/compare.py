@@ -16,6 +16,7 @@ import os, sys
 TOP = os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 sys.path.insert(0, os.path.join(TOP, "etc", "python"))
 from foam_fields import FieldFormatError, read_internal_field  # noqa: E402
+from ergun import ergun_gradient  # noqa: E402
 
 tdir, U, wall = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
 model = sys.argv[4] if len(sys.argv) > 4 else "A"
@@ -39,7 +40,7 @@ L = (k2 - k1) * dz
 g = 9.81
 dp = rho * (layer_mean(p, k1) - layer_mean(p, k2)) - rho * g * L   # p is kinematic
 eps = sum(layer_mean(alpha, k) for k in range(k1, k2 + 1)) / (k2 - k1 + 1)
-ergun = (150 * mu * (1 - eps) ** 2 * U / (eps ** 3 * d * d) + 1.75 * rho * (1 - eps) * U * U / (eps ** 3 * d)) * L
+ergun = ergun_gradient(eps, U, d, mu, rho) * L
 err = (dp - ergun) / ergun
 os.makedirs("results", exist_ok=True)
 new = not os.path.exists("results/summary.csv")

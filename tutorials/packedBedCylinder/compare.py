@@ -15,6 +15,7 @@ import os, sys
 TOP = os.environ.get("COARSEDEM_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 sys.path.insert(0, os.path.join(TOP, "etc", "python"))
 from foam_fields import FieldFormatError, read_internal_field  # noqa: E402
+from ergun import ergun_gradient  # noqa: E402
 
 tdir, U, method, np_, wall = sys.argv[1], float(sys.argv[2]), sys.argv[3], sys.argv[4], float(sys.argv[5])
 rho, nu, d, g = 1.2, 1.5e-5, 2e-3, 9.81
@@ -46,7 +47,7 @@ core = [i for i in slab if (C[i][0] ** 2 + C[i][1] ** 2) ** 0.5 <= R_wall_ring]
 L = z2 - z1
 dp = rho * (layer_mean(p, z1) - layer_mean(p, z2)) - rho * g * L     # p is kinematic
 eps = mean_over(slab)
-ergun = (150 * mu * (1 - eps) ** 2 * U / (eps ** 3 * d * d) + 1.75 * rho * (1 - eps) * U * U / (eps ** 3 * d)) * L
+ergun = ergun_gradient(eps, U, d, mu, rho) * L
 err = (dp - ergun) / ergun
 os.makedirs("results", exist_ok=True)
 new = not os.path.exists("results/summary.csv")
