@@ -5,7 +5,8 @@
 # tolerances (GAMG agglomerates differently in parallel), so fields agree to ~1e-7, not to 1e-15.
 # Checks: ErgunTest (fixed bed, kernels straddling the split) alpha to 1e-12 and p to 1e-6, on 2
 # ranks and on 4 (hierarchical 2 x 2);
-# settlingTest velocity history to 1e-6 of the terminal velocity; solid volume conserved in both.
+# settlingTest velocity history to 1e-6 of the terminal velocity; solid volume conserved in both;
+# the stage timers' spread over the ranks printed under each stage-timer line, the master within it.
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
@@ -50,6 +51,22 @@ for run, label in (("ergun2", "np 2"), ("ergun4", "np 4 (hierarchical 2 x 2)")):
         status |= not ok
 def hist(path):
     return [list(map(float, l.split(","))) for l in open(path).read().split("\n")[1:] if l]
+# the stages' spread over the ranks (issue 44): each stage's slowest rank at least its fastest, the
+# master's seconds between them, on every rank count that ran
+import glob
+for run, nranks in (("ergun2", 2), ("ergun4", 4)):
+    logs = sorted(glob.glob(os.path.join(w, run, "log.coarseDemFoam.U*")))
+    text = open(logs[-1]).read() if logs else ""
+    master = re.findall(r"^Stage timers \(s, share\):(.*)$", text, re.M)
+    spread = re.findall(r"^Stage spread over (\d+) ranks \(s, slowest / fastest\):(.*)$", text, re.M)
+    ok = bool(master) and len(spread) == len(master) and all(int(n) == nranks for n, _ in spread)
+    if ok:
+        own = dict(re.findall(r" (\w+) ([0-9.eE+-]+) \(", master[-1]))
+        pairs = re.findall(r" (\w+) ([0-9.eE+-]+) / ([0-9.eE+-]+)", spread[-1][1])
+        ok = len(pairs) == len(own) and all(float(lo) <= float(own[k]) <= float(hi) for k, hi, lo in pairs)
+    print(("PASS" if ok else "FAIL") + f": ErgunTest on {nranks} ranks: a 'Stage spread' line under each of its {len(master)} stage-timer lines,"
+          f" the master's seconds between the slowest and fastest rank's ({logs[-1] if logs else 'no log'})")
+    status |= not ok
 a = hist(os.path.join(w, "settling1", "results", "velocity.csv")); b = hist(os.path.join(w, "settling2", "results", "velocity.csv"))
 d = max(abs(x[2] - y[2]) for x, y in zip(a, b)) / 0.2323
 ok = len(a) == len(b) and d <= 1e-6
@@ -58,7 +75,7 @@ status |= not ok
 sys.exit(status)
 PYEOF
 )
-[ "$nread" -eq 5 ] || result fail "the comparison printed $nread of its 5 checks"
+[ "$nread" -eq 7 ] || result fail "the comparison printed $nread of its 7 checks"
 for run in ergun1 ergun2 ergun4 settling1 settling2; do
     err=$(grep -h "^End: Coupling" "$work/$run"/log.coarseDemFoam* 2>/dev/null | head -1 | sed 's/.*rel. err \([^)]*\)).*/\1/')
     if /usr/bin/python3 -c "import sys; sys.exit(0 if float('$err') <= 1e-12 else 1)" 2>/dev/null; then
