@@ -30,7 +30,7 @@ sed -i 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/^method .*/method hie
 sed -i 's/^processors .*/processors      2 2 1/' "$work/ergun4/DEM/in.liggghts"
 "$work/ergun4/Allrun" -np 4 0.2 > "$work/ergun4.log" 2>&1
 results_from < <(/usr/bin/python3 - "$work" <<'PYEOF'
-import re, sys, os
+import glob, re, sys, os
 w = sys.argv[1]
 def field(path):
     t = open(path).read()
@@ -53,7 +53,6 @@ def hist(path):
     return [list(map(float, l.split(","))) for l in open(path).read().split("\n")[1:] if l]
 # the stages' spread over the ranks (issue 44): each stage's slowest rank at least its fastest, the
 # master's seconds between them, on every rank count that ran
-import glob
 for run, nranks in (("ergun2", 2), ("ergun4", 4)):
     logs = sorted(glob.glob(os.path.join(w, run, "log.coarseDemFoam.U*")))
     text = open(logs[-1]).read() if logs else ""
