@@ -11,7 +11,7 @@
 # iterations and the largest final residual. The rest of system/fvSolution is the tutorial's as it is.
 # Serial, on a quiet machine.
 #
-#   bench/pressure_solver.sh [-rounds N] [-settings "NAME ..."]
+#   bench/pressure_solver.sh [-rounds N] [-settings "NAME ..."] [-name NAME]
 #
 # settings (the p entry; pFinal is $p with relTol 0):
 #   tutorial    GAMG, smoother GaussSeidel (the tutorial's)
@@ -20,18 +20,24 @@
 #   coarse100   GAMG, GaussSeidel, nCellsInCoarsestLevel 100 (10 by default)
 #   post1       GAMG, GaussSeidel, nPostSweeps 1 (2 by default)
 #   PCG         PCG, preconditioner DIC
-# Written: bench/results/pressure_solver.csv (a row per run) and pressure_solver_info.txt.
+#   algebraic   GAMG, GaussSeidel, agglomerator algebraicPair (cells paired by the size of the matrix's
+#               coefficients, not by face area: Dp varies by orders between the bed and the freeboard)
+# Written: bench/results/pressure_solver.csv (a row per run) and pressure_solver_info.txt; with -name NAME,
+# bench/results/NAME.csv and NAME_info.txt instead (a measurement kept beside the main one).
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/.." && pwd)"
 rounds=3
 settings="tutorial DICGS DIC coarse100 post1 PCG"
+name=pressure_solver
 while [ $# -gt 0 ]; do
     case "$1" in
         -rounds) rounds="$2"; shift 2 ;;
         -settings) settings="$2"; shift 2 ;;
-        *) echo "usage: $0 [-rounds N] [-settings \"NAME ...\"]" >&2; exit 2 ;;
+        -name) name="$2"; shift 2 ;;
+        *) echo "usage: $0 [-rounds N] [-settings \"NAME ...\"] [-name NAME]" >&2; exit 2 ;;
     esac
 done
+[[ "$name" =~ ^[A-Za-z0-9_]+$ ]] || { echo "bench/pressure_solver: -name must be letters, digits and _ (got '$name')" >&2; exit 2; }
 [[ "$rounds" =~ ^[1-9][0-9]*$ ]] || { echo "bench/pressure_solver: -rounds must be a whole number (got '$rounds')" >&2; exit 2; }
 entry() { # setting: the p entry's contents
     case "$1" in
@@ -41,6 +47,7 @@ entry() { # setting: the p entry's contents
         coarse100) echo "solver GAMG; smoother GaussSeidel; tolerance 1e-6; relTol 0.01; nCellsInCoarsestLevel 100;" ;;
         post1) echo "solver GAMG; smoother GaussSeidel; tolerance 1e-6; relTol 0.01; nPostSweeps 1;" ;;
         PCG) echo "solver PCG; preconditioner DIC; tolerance 1e-6; relTol 0.01;" ;;
+        algebraic) echo "solver GAMG; smoother GaussSeidel; tolerance 1e-6; relTol 0.01; agglomerator algebraicPair;" ;;
         *) return 1 ;;
     esac
 }
@@ -61,7 +68,7 @@ if [ ! -f "$state/log.coarseDemFoam" ] || ! grep -q '^End' "$state/log.coarseDem
 fi
 last=$(cd "$state" && ls -d [0-9]* | sort -g | tail -1)
 end=$(/usr/bin/python3 -c "import sys; print('%.6g' % (float(sys.argv[1]) + 0.02))" "$last")
-csv="$here/results/pressure_solver.csv"
+csv="$here/results/$name.csv"
 mkdir -p "$here/results"
 echo "setting,round,cpu_s,p_solves_per_step,p_iterations_mean,max_final_residual,steps" > "$csv"
 for r in $(seq 1 "$rounds"); do
@@ -83,12 +90,12 @@ for r in $(seq 1 "$rounds"); do
     done
 done
 {
-    echo "command: bench/pressure_solver.sh -rounds $rounds -settings \"$settings\""
+    echo "command: bench/pressure_solver.sh -rounds $rounds -settings \"$settings\" -name $name"
     echo "commit: $("$root/etc/codeVersion")"
     echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
     echo "state: the Mueller demo's last write ($last s), 0.02 s from it"
     echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
-} > "$here/results/pressure_solver_info.txt"
+} > "$here/results/${name}_info.txt"
 /usr/bin/python3 - "$csv" <<'PY'
 import csv, statistics, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
