@@ -7,7 +7,10 @@ T, quantity (depth-averaged binned gas fraction and v_z) and MR height: the RMS 
 points of profile_T - profile_REF, beside the RMS spread of the reference profile about its mean (the
 size of the profile itself): OUT.csv. From each run's log, the solver's STAGE timer and its share of
 the timed stages, the time loop's wall seconds, the fluid's largest Courant number (over the run, and
-its mean over the steps) and the number of CFD steps above 1 (the first step, the hand-over from the shipped state, left out): OUT_timers.csv.
+its mean over the steps) and the number of CFD steps above 1 (the first step, the hand-over from the shipped state, left out),
+the pressure's mean linear-solver iterations per solve and the mean of the steps' local continuity
+error (the log's "sum local", the step's |ddt(alpha) + div(alpha phi)| dt averaged over the cells):
+OUT_timers.csv.
 """
 import csv
 import math
@@ -67,6 +70,23 @@ def loop_and_courant(path):
     return wall, max(steps), sum(steps) / len(steps), sum(1 for c in steps if c > 1), len(steps)
 
 
+def pressure_work(path):
+    """(mean iterations of the pressure solves, mean of the steps' local continuity error) from the
+    solver log's 'Solving for p' and 'fluid-phase continuity errors : sum local = E' lines."""
+    iterations, errors = [], []
+    with open(os.path.join(path, "log.coarseDemFoam")) as f:
+        for text in f:
+            m = re.search(r"Solving for p, .*No Iterations (\d+)", text)
+            if m:
+                iterations.append(int(m.group(1)))
+            m = re.match(r"fluid-phase continuity errors : sum local = ([0-9.eE+-]+)", text)
+            if m:
+                errors.append(float(m.group(1)))
+    if not iterations or not errors:
+        sys.exit("tolerance_study.py: no pressure solves or continuity errors in %s/log.coarseDemFoam" % path)
+    return sum(iterations) / len(iterations), sum(errors) / len(errors)
+
+
 def main(argv):
     if len(argv) < 6:
         sys.exit(__doc__)
@@ -85,11 +105,14 @@ def main(argv):
     with open(out + "_timers.csv", "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["tolerance", stage + "_s", stage + "_share_pct", "loop_wall_s", "courant_max",
-                    "courant_max_step_mean", "cfd_steps_above_1", "cfd_steps"])
+                    "courant_max_step_mean", "cfd_steps_above_1", "cfd_steps", "p_iterations_mean",
+                    "continuity_local_mean"])
         for t in [ref] + others:
             s, share = stage_timer(run_dir(work, run, t), stage)
             wall, co, co_mean, above, steps = loop_and_courant(run_dir(work, run, t))
-            w.writerow([t, "%.2f" % s, "%.1f" % share, "%.2f" % wall, "%.3g" % co, "%.3g" % co_mean, above, steps])
+            p_iterations, continuity = pressure_work(run_dir(work, run, t))
+            w.writerow([t, "%.2f" % s, "%.1f" % share, "%.2f" % wall, "%.3g" % co, "%.3g" % co_mean, above, steps,
+                        "%.2f" % p_iterations, "%.3g" % continuity])
 
 
 if __name__ == "__main__":

@@ -10,6 +10,7 @@
 # more than those of a tighter tolerance do.
 #
 #   bench/tolerance_study.sh -setting diffusion|pressure|velocity|demStep|cfdStep|correctors [-values "REF T2 T3 ..."]
+#                            [-name NAME]
 #
 # Settings:
 #   diffusion  diffusionProps tolerance (the smoothing's CG), model diffusion (b = 6 d); stage alphaP.
@@ -29,15 +30,18 @@
 # Written: bench/results/tolerance_<setting>.csv (per tolerance, quantity and height: the RMS over the
 # profile of its difference from the reference), tolerance_<setting>_timers.csv (the setting's stage
 # timer and its share, the time loop's wall seconds, the fluid's largest Courant number and the CFD steps
-# above 1, of each run) and tolerance_<setting>_info.txt (command, commit).
+# above 1, the pressure's iterations and continuity error, of each run) and tolerance_<setting>_info.txt
+# (command, commit); with -name NAME, results/NAME*.csv and NAME_info.txt instead, the runs in
+# work/NAME/ (another study of a setting kept beside the first).
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/.." && pwd)
-setting= values=
+setting= values= name=
 while [ $# -gt 0 ]; do
     case "$1" in
         -setting) setting="$2"; shift 2 ;;
         -values) values="$2"; shift 2 ;;
-        *) echo "usage: $0 -setting diffusion|pressure|velocity|demStep|cfdStep|correctors [-values \"REF T2 T3 ...\"]" >&2; exit 2 ;;
+        -name) name="$2"; shift 2 ;;
+        *) echo "usage: $0 -setting diffusion|pressure|velocity|demStep|cfdStep|correctors [-values \"REF T2 T3 ...\"] [-name NAME]" >&2; exit 2 ;;
     esac
 done
 case "$setting" in
@@ -96,7 +100,9 @@ set_tolerance() { # tutorial-copy tol
             sed -i "s|^\( *nCorrectors  *\)[0-9]*;|\1$2;|" "$1/system/fvSolution" ;;
     esac
 }
-work="$here/work/tolerance_$setting"
+name=${name:-tolerance_$setting}
+[[ "$name" =~ ^[A-Za-z0-9_]+$ ]] || { echo "bench/tolerance_study: -name must be letters, digits and _ (got '$name')" >&2; exit 2; }
+work="$here/work/$name"
 mkdir -p "$work" "$here/results"
 for t in $values; do
     d="$work/$t"
@@ -110,11 +116,11 @@ for t in $values; do
       COARSEDEM_DIR="$root" ./Allrun -mode demo -model "$model" -np 1 > "$d/log.Allrun" 2>&1 ) ||
         { echo "bench/tolerance_study: the demo failed with $setting tolerance $t ($d/log.Allrun)" >&2; exit 1; }
 done
-out="$here/results/tolerance_$setting"
+out="$here/results/$name"
 # shellcheck disable=SC2086
 /usr/bin/python3 "$here/tolerance_study.py" "$work" "${model}_dx1_U0.9_demo" "$stage" "$out" $values || exit 1
 {
-    echo "command: bench/tolerance_study.sh -setting $setting -values \"$values\""
+    echo "command: bench/tolerance_study.sh -setting $setting -values \"$values\" -name $name"
     echo "commit: $("$root/etc/codeVersion")"
     echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
     echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
