@@ -29,6 +29,11 @@ own entries (background fields, Young's modulus, ranks), and writes RUN/results/
   particles of each species lie in another cell (from the volume that differs), and how many have a
   dumped centre within 1e-6 m of a cell face, where the dump's rounding may move them (-1: no fields);
   a WARNING when more moved than that;
+- (bed.csv) the fluid's shear force on the tube's side walls over the buoyant weight
+  (fluid_wall_shear_share, +- sem, from the written times in the window: fluid_wall_shear_writes) and
+  what the bed's balance leaves, dp_balance_residual = (dp - weight)/weight + walls' share - shear:
+  the frictional pressure drop carries the particles' weight less the walls' support, and the fluid's
+  own friction on the walls (about 2 % of the weight at 0.025 m/s in the 10 mm tube);
 - series.csv: per dump, each species' count, mean height, highest particle and count in the top cell
   layer, and the pressure drop;
 - messages.txt: the WARNING lines (also printed).
@@ -268,9 +273,9 @@ def commit_of(run):
 
 
 def case_entries(run):
-    """(background fields on/off, Young's modulus in Pa, MPI ranks, neighbour-list style) of the run's
-    own case files: couplingProperties' backgroundFields, DEM/in.liggghts' youngsModulus and
-    `neighbor` style, decomposeParDict's numberOfSubdomains (1 without one)."""
+    """(background fields on/off, Young's modulus in Pa, MPI ranks, neighbour-list style, model A or B)
+    of the run's own case files: couplingProperties' backgroundFields and modelType, DEM/in.liggghts'
+    youngsModulus and `neighbor` style, decomposeParDict's numberOfSubdomains (1 without one)."""
     def find(rel, pattern, default):
         path = os.path.join(run, rel)
         if not os.path.isfile(path):
@@ -281,7 +286,32 @@ def case_entries(run):
     young = float(find(os.path.join("DEM", "in.liggghts"), r"youngsModulus\s+peratomtype\s+([0-9.eE+-]+)", "nan"))
     ranks = int(find(os.path.join("system", "decomposeParDict"), r"numberOfSubdomains\s+(\d+)\s*;", "1"))
     neighbour = find(os.path.join("DEM", "in.liggghts"), r"^\s*neighbor\s+\S+\s+(\w+)", "unknown")
-    return ("on" if background in ("on", "true", "yes") else "off"), young, ranks, neighbour
+    model = find(os.path.join("constant", "couplingProperties"), r"^\s*modelType\s+(\w+)\s*;", "A")
+    return ("on" if background in ("on", "true", "yes") else "off"), young, ranks, neighbour, model
+
+
+def fluid_wall_shear(run, times, tstart, tend, model_a):
+    """The fluid's shear force on the tube's side walls along z (N) at each written time of the window
+    (times: written_times' list), as the solver's momentum equation puts it there: the laplacian's
+    wall flux rho_f nu sw (u_z - 0) / (dx / 2) dx^2 over each wall face of the uniform block (no-slip
+    walls; sw = alpha in Model A, 1 in Model B). The transposed stress part is left out: its z part at
+    a wall face is nu du_n/dz with u_n = 0 on the wall. Returns (t, F) arrays; a run on several ranks
+    gives only its reconstructed times."""
+    i = np.arange(NX * NY * NZ) % NX
+    j = (np.arange(NX * NY * NZ) // NX) % NY
+    faces = (i == 0).astype(int) + (i == NX - 1) + (j == 0) + (j == NY - 1)   # a corner cell has two
+    out_t, out_f = [], []
+    for t, d in times:
+        if not (tstart - 1e-9 <= t <= tend + 1e-9):
+            continue
+        u, alpha = os.path.join(run, d, "U"), os.path.join(run, d, "alpha")
+        if not (os.path.isfile(u) and os.path.isfile(alpha)):
+            continue
+        uz = _fields.read_internal_field(u, NX * NY * NZ)[:, 2]
+        sw = read_internal_field(alpha) if model_a else 1.0
+        out_t.append(t)
+        out_f.append(float(np.sum(faces * ref.RHO_F * ref.NU * sw * uz / (0.5 * DX) * DX * DX)))
+    return np.array(out_t), np.array(out_f)
 
 
 def write_csv(path, header, rows, fmt):
@@ -322,7 +352,7 @@ def main():
               "continue it first (Allrun ... -continue)" % (name, win[-1][0], a.tend))
         return 1
     window_s = win[-1][0] - win[0][0]
-    background, young, ranks, neighbour = case_entries(a.run)
+    background, young, ranks, neighbour, model = case_entries(a.run)
     wall, _, _, segs, _ = run_wall(a.run)      # the log read once: wall time and stage timers
     costs = stage_costs(segs)
     profs, heights = [], []                     # [dump][species][NZ], [dump][species]
@@ -373,13 +403,13 @@ def main():
     sp0 = species_index(first["radius"])
     vol = [float(np.sum(4.0 / 3 * math.pi * first["radius"][sp0 == s] ** 3)) for s in range(len(SPECIES))]
     dp_ref = ref.dp_weight(sum(vol))
+    weight = (ref.RHO_P - ref.RHO_F) * ref.G * sum(vol)
     # where the weight goes: the walls' z forces on the particles (DEM/tubeWalls.liggghts), their
     # window mean over the bed's buoyant weight; nan for a run made before the walls stored them
     wall_share = wall_share_sem = float("nan")
     if os.path.isfile(os.path.join(a.run, "post", "wallForce.txt")):
         tw, wf = read_wall_forces(a.run, a.demdt)
         ww = (tw >= a.tstart - 1e-9) & (tw <= a.tend + 1e-9)
-        weight = (ref.RHO_P - ref.RHO_F) * ref.G * sum(vol)
         if ww.sum() >= 2 * NB:
             wall_share, wall_share_sem = wall_force_share(wf[ww], weight)
         if wall_share > 0.03:
@@ -388,6 +418,11 @@ def main():
                                                                               100 * float(wf[ww, 0].mean()) / weight))
     times = written_times(a.run)
     last_t, last_dir = times[-1] if times else (float("nan"), None)
+    # the fluid's shear on the side walls: the part of the frictional pressure drop that is not drag on
+    # the particles (the bed's balance: dp A = (weight - walls' support) + fluid wall shear)
+    t_sh, f_sh = fluid_wall_shear(a.run, times, a.tstart, a.tend, model == "A")
+    shear_share = float(f_sh.mean()) / weight if len(f_sh) else float("nan")
+    shear_sem = batch_sem(f_sh) / weight if len(f_sh) >= 2 * NB else float("nan")
     p_z = alpha_solver = np.full(NZ, np.nan)
     if last_dir and os.path.isfile(os.path.join(a.run, last_dir, "pMean")):
         p_z = ref.RHO_F * layers_of(read_internal_field(os.path.join(a.run, last_dir, "pMean")))
@@ -435,6 +470,10 @@ def main():
     near = (np.abs(c_end["x"] - 0.5 * ref.WIDTH) < DX) & (np.abs(c_end["y"] - 0.5 * ref.WIDTH) < DX)
     axis_species = binned(c_end, species_index(c_end["radius"]), (near, 4 * DX * DX))
 
+    # the balance's residual, of the weight: what neither the particles' weight (less the walls'
+    # support) nor the fluid's wall shear accounts for in the frictional pressure drop
+    balance = (dp_sim - dp_ref) / dp_ref + (wall_share if np.isfinite(wall_share) else 0.0) - shear_share
+
     # files
     cols = ",".join("alpha_%s,alpha_%s_sem" % (s, s) for s in SPECIES)
     write_csv(os.path.join(res, "profiles.csv"),
@@ -461,13 +500,14 @@ def main():
               "t_end_dump,t_last_write,max_overlap_pct_d,n_pairs_overlap_over_5pct,binned_fields_moved_big,"
               "binned_fields_near_face_big,binned_fields_moved_small,binned_fields_near_face_small,wall_s,n_warnings,"
               "background,young_pa,ranks,coupling_share,dem_per_fluid,coupling_per_fluid,commit,wall_force_share,wall_force_share_sem,"
-              "dem_dt_s",
+              "dem_dt_s,fluid_wall_shear_share,fluid_wall_shear_share_sem,fluid_wall_shear_writes,dp_balance_residual",
               [[a.method, a.U, a.mode, a.tstart, a.tend, window_s, len(win), int(pw.sum()), dp_sim, dp_sem,
                 dp_ref, (dp_sim - dp_ref) / dp_ref, 1e3 * widths.mean(), 1e3 * sem_of(widths),
                 1e3 * mix_mean_prof.sum() * DX, 1e3 * mix_zone[0], 1e3 * mix_zone[1], t_end, last_t,
-                100 * worst_overlap, worst_pairs] + list(fields_check[0]) + list(fields_check[1]) + [wall, len(warnings), background, young, ranks] + list(costs) + [commit_of(a.run), wall_share, wall_share_sem, a.demdt]],
+                100 * worst_overlap, worst_pairs] + list(fields_check[0]) + list(fields_check[1]) + [wall, len(warnings), background, young, ranks] + list(costs) + [commit_of(a.run), wall_share, wall_share_sem, a.demdt,
+                shear_share, shear_sem, len(f_sh), balance]],
               "%s,%.3f,%s,%g,%g,%g,%d,%d,%.3f,%.3f,%.3f,%.5f,%.2f,%.2f,%.1f,%.1f,%.1f,%g,%g,%.3f,%d,%d,%d,%d,%d,%.1f,%d,%s,%g,%d,"
-              "%.4f,%.3f,%.4f,%s,%.5f,%.5f,%g")
+              "%.4f,%.3f,%.4f,%s,%.5f,%.5f,%g,%.5f,%.5f,%d,%.5f")
     write_csv(os.path.join(res, "axis_end.csv"),
               "z_mm,alphaP_method_t%g,%s" % (last_t, ",".join("alpha_%s_binned_t%g" % (s, t_end) for s in SPECIES)),
               [[1e3 * z[k], axis_solver[k]] + [axis_species[s][k] for s in range(len(SPECIES))] for k in range(NZ)],
@@ -498,6 +538,9 @@ def main():
               "layer %.1f..%.1f mm, mean height %.2f +- %.2f mm (drift in the window %+.2f mm)"
               % (name, name_s, r[4], r[5], r[14], r[15], r[13], r[8], r[9], r[10], r[11], r[12]))
     print("%s: the walls carry %.2f +- %.2f %% of the buoyant weight" % (name, 100 * wall_share, 100 * wall_share_sem))
+    print("%s: the fluid's shear on the tube walls %.2f +- %.2f %% of the buoyant weight (%d written times); "
+          "dp - weight + walls - shear = %+.2f %% of the weight" % (name, 100 * shear_share, 100 * shear_sem, len(f_sh),
+                                                                    100 * balance))
     print("%s: frictional dp %.2f +- %.2f Pa against the buoyant weight %.2f Pa (%+.2f %%); mixing region %.2f +- %.2f mm "
           "(on the mean profiles %.1f mm, %.1f..%.1f mm); largest overlap %.2f %% d; window %g..%g s, %d dumps; wall %.0f s"
           % (name, dp_sim, dp_sem, dp_ref, 100 * (dp_sim - dp_ref) / dp_ref, 1e3 * widths.mean(), 1e3 * sem_of(widths),

@@ -12,14 +12,17 @@ differ; a long run post-processed at 6 s has the short mode's window); velocitie
 
 - summary.csv, one row per run and species, with the columns
   method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,
-  mixing_width_mm,window_s,wall_s,coupling_share,wall_force_share
+  mixing_width_mm,window_s,wall_s,coupling_share,wall_force_share,fluid_wall_shear_share
   alpha_p_reference: Richardson-Zaki with the Garside-Al-Dibouni exponent (the paper's Fig. 16
   line; references.py); dp_pa, dp_reference_pa, mixing_width_mm: the whole bed's (the same on both
   rows of a run); coupling_share: on the solver's last "Stage timers" line, every stage but DEM,
   fluid and fields over the sum of all stages (a continued run: each start's last line, summed;
   postprocess.py); wall_force_share: the walls' share of the bed's buoyant weight in the window
   (their z forces on the particles, DEM/tubeWalls.liggghts; empty for a run made before the walls
-  stored them);
+  stored them); fluid_wall_shear_share: the fluid's shear force on the side walls over the buoyant
+  weight, mean over the window's written times (postprocess.py; empty for a run post-processed before
+  it, or with no written time in the window), which the frictional pressure drop carries besides the
+  particles: dp A = weight - walls' support + fluid wall shear;
   wall_s: the run's wall seconds from its solver log (postprocess.py: pauses and stretches computed
   twice left out); window_s: from the window's first to its last dump;
   method: the run's method, "+background" with background fields (bed.csv's background column, or
@@ -45,13 +48,24 @@ import khan_references as ref  # noqa: E402
 from khan_runs import one_case, read_run  # noqa: E402
 
 HEADER = ("method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,"
-          "mixing_width_mm,window_s,wall_s,coupling_share,wall_force_share")
+          "mixing_width_mm,window_s,wall_s,coupling_share,wall_force_share,fluid_wall_shear_share")
 
 
 # Zhang et al. (2023) §V.C, the binary bed's costs in multiples of the fluid solve's CPU time: the
 # DEM about 23; the solid quantities per method (their names: PCM, big particle, diffusion based,
 # DPVM); the fluid-phase reconstruction (background fields) about 2.69
 PAPER_COST = {"DEM": 23.0, "centre": 3.85, "bigParticle": 4.37, "diffusion": 4.82, "divided": 4.91, "background": 2.69}
+
+
+def shear(b):
+    """bed.csv's fluid_wall_shear_share, '' where the run has none (older post-processing, no fields)."""
+    v = b.get("fluid_wall_shear_share", "") or ""
+    return "" if v in ("", "nan") else v
+
+
+def percent(v):
+    """'%+.2f %%' of a share given as text, '-' when there is none."""
+    return "-" if v in ("", "nan", None) else "%+.2f %%" % (100 * float(v))
 
 
 def summary_rows(runs):
@@ -66,7 +80,8 @@ def summary_rows(runs):
                             layer_top_mm=l["top_mm"], dp_pa=b["dp_pa"], dp_reference_pa=b["dp_weight_pa"],
                             mixing_width_mm=b["mixing_width_mm"], window_s=b["window_s"], wall_s=b["wall_s"],
                             coupling_share="%.4f" % r["share"],
-                            wall_force_share=b.get("wall_force_share", "") or ""))
+                            wall_force_share=b.get("wall_force_share", "") or "",
+                            fluid_wall_shear_share=shear(b)))
     return out
 
 
@@ -75,14 +90,14 @@ def write_table(path, runs, case):
         f.write("Averaging window %s s, Young's modulus %s Pa.\n\n" % case)
         f.write("| run | species | alpha_p plateau ± sem | R-Z | drag eq. | plateau - R-Z | from dp slope | layer (mm) "
                 "| mean height (mm) | its drift (mm) | dp (Pa) ± sem | weight (Pa) | dp err | mixing (mm) | window (s) | wall (s) "
-                "| coupling | DEM / fluid | coupling / fluid |\n")
-        f.write("|" + "---|" * 19 + "\n")
+                "| coupling | DEM / fluid | coupling / fluid | walls | fluid shear | dp - weight + walls - shear |\n")
+        f.write("|" + "---|" * 22 + "\n")
         for r in runs:
             b = r["bed"]
             for sp in ref.SPECIES:
                 l = r["layers"][sp]
                 f.write("| %s | %s | %.4f ± %.4f | %.4f | %.4f | %+.4f | %.4f | %.1f..%.1f | %.2f ± %.2f | %+.2f | %.2f ± %.2f "
-                        "| %.2f | %+.1f %% | %.1f ± %.1f | %g | %.0f | %.1f %% | %.1f | %.2f |\n" % (
+                        "| %.2f | %+.1f %% | %.1f ± %.1f | %g | %.0f | %.1f %% | %.1f | %.2f | %s | %s | %s |\n" % (
                             r["name"], sp, float(l["alpha_p_plateau"]), float(l["alpha_p_sem"]),
                             float(l["alpha_p_richardson_zaki"]), float(l["alpha_p_drag_equilibrium"]),
                             float(l["alpha_p_plateau"]) - float(l["alpha_p_richardson_zaki"]),
@@ -91,10 +106,16 @@ def write_table(path, runs, case):
                             float(l["mean_height_drift_mm"]), float(b["dp_pa"]),
                             float(b["dp_sem_pa"]), float(b["dp_weight_pa"]), 100 * float(b["dp_rel_err"]),
                             float(b["mixing_width_mm"]), float(b["mixing_width_sem_mm"]), float(b["window_s"]),
-                            float(b["wall_s"]), 100 * r["share"], r["dem_per_fluid"], r["coupling_per_fluid"]))
+                            float(b["wall_s"]), 100 * r["share"], r["dem_per_fluid"], r["coupling_per_fluid"],
+                            percent(b.get("wall_force_share")), percent(shear(b)),
+                            percent(b.get("dp_balance_residual") if shear(b) else "")))
         f.write("\nalpha_p: particle volumes binned by the cell of their centre, cross-section mean, time mean over "
                 "the window (sem: batch means); R-Z: Richardson-Zaki with the Garside-Al-Dibouni exponent; drag eq.: "
                 "the homogeneous layer under the code's Di Felice drag (references.py).\n")
+        f.write("\nwalls: their z force on the particles (support); fluid shear: the fluid's shear force on the side "
+                "walls, as the solver's momentum equation puts it there; both in % of the buoyant weight. The frictional "
+                "pressure drop carries the weight less the walls' support plus the fluid's wall shear: the last column "
+                "is what that balance leaves (postprocess.py).\n")
         f.write("\nCosts from the solver's stage timers (pauses left out): DEM / fluid and coupling / fluid are in "
                 "multiples of the fluid solve's time, as Zhang et al. (2023, §V.C) give theirs for this bed: DEM about "
                 "%g; solid quantities %g (PCM = centre), %g (big particle), %g (diffusion based), %g (DPVM = divided); "
