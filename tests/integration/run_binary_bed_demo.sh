@@ -7,6 +7,7 @@
 #   - the frictional pressure drop is within 5 % of the bed's buoyant weight (the tolerance of the
 #     liquidFluidizedBed test; the issue's 3 % is for the long runs);
 #   - no WARNING: no layer leaves the tube, no missed contacts;
+#   - the pressure drop's balance (weight - walls' support + the fluid's wall shear) closes within 2 %;
 #   - summary.csv has the agreed header and a row per species;
 #   - bad input is reported by name and time: the run's data again with n = 1.5 (the small
 #     species' kernel within its host cell) and with small particles moved into the top cell layer;
@@ -75,14 +76,21 @@ check(abs(dp - w) <= 0.05 * w, "frictional pressure drop %.2f +- %.2f Pa within 
 ws = float(bed.get("wall_force_share", "nan"))
 check(ws < 0.03, "the walls carry under 3 %% of the bed's buoyant weight (%.2f +- %.2f %%: post/wallForce.txt)"
       % (100 * ws, 100 * float(bed.get("wall_force_share_sem", "nan"))))
+# the bed's balance: the frictional pressure drop = the weight less the walls' support plus the fluid's
+# shear on the side walls (postprocess.py; the demo's window holds one written time)
+shear, writes, residual = (float(bed.get("fluid_wall_shear_share", "nan")), int(bed.get("fluid_wall_shear_writes", "0")),
+                           float(bed.get("dp_balance_residual", "nan")))
+check(writes >= 1 and 0 < shear < 0.05 and abs(residual) < 0.02,
+      "the pressure drop's balance closes within 2 %% of the weight: dp %+.2f %%, walls %.2f %%, fluid wall shear %.2f %% "
+      "(%d written times), residual %+.2f %%" % (100 * float(bed["dp_rel_err"]), 100 * ws, 100 * shear, writes, 100 * residual))
 msgs = open(os.path.join(res, "messages.txt")).read().strip()
 check(not msgs, "no WARNING (no layer leaves the tube, largest overlap %s %% d)%s"
       % (bed["max_overlap_pct_d"], "" if not msgs else ": " + msgs.splitlines()[0]))
 summ = os.path.join(res, "compare", "summary.csv")
 lines = open(summ).read().splitlines() if os.path.isfile(summ) else []
 header = ("method,U,species,alpha_p_plateau,alpha_p_sem,alpha_p_reference,layer_top_mm,dp_pa,dp_reference_pa,"
-          "mixing_width_mm,window_s,wall_s,coupling_share,wall_force_share")
-check(len(lines) == 3 and lines[0] == header and all(len(l.split(",")) == 14 for l in lines[1:]),
+          "mixing_width_mm,window_s,wall_s,coupling_share,wall_force_share,fluid_wall_shear_share")
+check(len(lines) == 3 and lines[0] == header and all(len(l.split(",")) == 15 for l in lines[1:]),
       "compare.py's summary.csv: the agreed header and a row per species (%d lines)" % len(lines))
 sys.exit(status)
 PYEOF
