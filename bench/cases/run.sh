@@ -32,7 +32,7 @@
 #
 # The baseline (the settings before issue 44, bench/cases/README.md says why each changed):
 #   muller  DEM step 3e-6 s with couplingInterval 60 (CFD step 1.8e-4 s); p and pFinal to an
-#           absolute 1e-8, U to 1e-8 (relTol 0; the tutorial: 1e-6 since issue 44)
+#           absolute 1e-8, U to 1e-8 (relTol 0; the tutorial: p to 1e-4, U to 1e-6 since issue 44)
 #   khan    DEM step 1e-5 s with couplingInterval 100 (CFD step 1e-3 s)
 # Run it on a quiet machine: on 2 cores anything else running makes the 2-rank runs wait for each
 # other (MPI ranks poll).
