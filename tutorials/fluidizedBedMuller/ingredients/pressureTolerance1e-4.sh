@@ -25,7 +25,7 @@
 # expansion. So that settings adopted one after another cannot drift step by step, (a)-(c) must hold
 # also against the two-corrector reference's four windows (bigParticle_dx1_U0.9_medium_w*).
 # Otherwise the tutorial keeps 1e-6.
-# Decided 2026-12-07 23:44 UTC by that rule (validation/muller/results/medium/README.md, "The pressure
+# Decided 2026-12-07 23:41 UTC by that rule (validation/muller/results/medium/README.md, "The pressure
 # to 1e-4"): the run (3537 s of solver wall, 22:35-23:41 UTC, beside a binary-bed run) against the
 # noMomentumPredictor windows NO CHANGE DETECTED, p = 0.657, no quantity alone below p = 0.23,
 # pressure drop -1.61 % against -1.73 % of the weight, expansion 1.543 against 1.551; against the
