@@ -577,12 +577,8 @@ with tempfile.TemporaryDirectory() as tmp:
     check("bed.csv has no coupling_share" in refused and "-post again" in refused,
           "binary bed compare.py refuses a bed.csv without the stage costs, saying to post-process again: %r" % refused[-120:])
 
-    # postprocess.py's fluid wall shear: uniform u_z = 0.02 m/s and alpha = 0.5 on the 10 x 10 x 120 block
+    # the fluid wall shear of postprocess.py (khan_pressure): uniform u_z = 0.02 m/s and alpha = 0.5 on the 10 x 10 x 120 block
     # give 4800 wall faces x rho nu sw u_z / (dx/2) dx^2; a written time outside the window is not read
-    import importlib.util
-    spec = importlib.util.spec_from_file_location("khan_postprocess", os.path.join(top, "tutorials/binaryBedKhan/postprocess.py"))
-    khan_post = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(khan_post)
     shear_run = os.path.join(tmp, "shear")
     for tdir, uz in (("5", 0.02), ("14", 1.0)):
         os.makedirs(os.path.join(shear_run, tdir))
@@ -592,12 +588,12 @@ with tempfile.TemporaryDirectory() as tmp:
         open(os.path.join(shear_run, tdir, "alpha"), "w").write(
             "FoamFile { version 2.0; format ascii; class volScalarField; object alpha; }\n"
             "dimensions [0 0 0 0 0 0 0];\ninternalField uniform 0.5;\n")
-    times = khan_post.written_times(shear_run)
-    ta, fa = khan_post.fluid_wall_shear(shear_run, times, 3, 13, True)
-    tb, fb = khan_post.fluid_wall_shear(shear_run, times, 3, 13, False)
+    times = [(5.0, "5"), (14.0, "14")]
+    ta, fa = khan_pressure.fluid_wall_shear(shear_run, times, 3, 13, True, (10, 10, 120), 1e-3)
+    tb, fb = khan_pressure.fluid_wall_shear(shear_run, times, 3, 13, False, (10, 10, 120), 1e-3)
     expected = 4800 * khan_ref.RHO_F * khan_ref.NU * 0.02 / 0.5e-3 * 1e-6
     check(list(ta) == [5.0] and abs(fa[0] - 0.5 * expected) < 1e-12 * expected and abs(fb[0] - expected) < 1e-12 * expected,
-          "binary bed postprocess.py: the fluid's wall shear of a uniform u_z over 4800 wall faces, alpha-weighted "
+          "binary bed khan_pressure: the fluid's wall shear of a uniform u_z over 4800 wall faces, alpha-weighted "
           "in Model A (%s at %s s; expected %.4g N and, Model B, %.4g N: %s)" % (list(fa), list(ta), 0.5 * expected,
                                                                              expected, list(fb)))
 

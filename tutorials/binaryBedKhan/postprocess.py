@@ -91,7 +91,7 @@ sys.path.insert(0, os.path.join(os.environ.get("COARSEDEM_DIR") or os.path.join(
 import khan_references as ref  # noqa: E402
 import foam_fields as _fields  # noqa: E402
 from dem_series import NB, batch_sem, read_dumps, read_wall_forces, wall_force_share  # noqa: E402
-from khan_pressure import frictional_dp, sample_gaps  # noqa: E402
+from khan_pressure import fluid_wall_shear, frictional_dp, sample_gaps  # noqa: E402
 from khan_layers import layer  # noqa: E402
 from particle_pairs import close_pairs  # noqa: E402
 from solver_log import NOT_COUPLING, run_wall, stage_times  # noqa: E402
@@ -290,30 +290,6 @@ def case_entries(run):
     return ("on" if background in ("on", "true", "yes") else "off"), young, ranks, neighbour, model
 
 
-def fluid_wall_shear(run, times, tstart, tend, model_a):
-    """The fluid's shear force on the tube's side walls along z (N) at each written time of the window
-    (times: written_times' list), as the solver's momentum equation puts it there: the laplacian's
-    wall flux rho_f nu sw (u_z - 0) / (dx / 2) dx^2 over each wall face of the uniform block (no-slip
-    walls; sw = alpha in Model A, 1 in Model B). The transposed stress part is left out: its z part at
-    a wall face is nu du_n/dz with u_n = 0 on the wall. Returns (t, F) arrays; a run on several ranks
-    gives only its reconstructed times."""
-    i = np.arange(NX * NY * NZ) % NX
-    j = (np.arange(NX * NY * NZ) // NX) % NY
-    faces = (i == 0).astype(int) + (i == NX - 1) + (j == 0) + (j == NY - 1)   # a corner cell has two
-    out_t, out_f = [], []
-    for t, d in times:
-        if not (tstart - 1e-9 <= t <= tend + 1e-9):
-            continue
-        u, alpha = os.path.join(run, d, "U"), os.path.join(run, d, "alpha")
-        if not (os.path.isfile(u) and os.path.isfile(alpha)):
-            continue
-        uz = _fields.read_internal_field(u, NX * NY * NZ)[:, 2]
-        sw = read_internal_field(alpha) if model_a else 1.0
-        out_t.append(t)
-        out_f.append(float(np.sum(faces * ref.RHO_F * ref.NU * sw * uz / (0.5 * DX) * DX * DX)))
-    return np.array(out_t), np.array(out_f)
-
-
 def write_csv(path, header, rows, fmt):
     with open(path, "w") as f:
         f.write(header + "\n")
@@ -420,7 +396,7 @@ def main():
     last_t, last_dir = times[-1] if times else (float("nan"), None)
     # the fluid's shear on the side walls: the part of the frictional pressure drop that is not drag on
     # the particles (the bed's balance: dp A = (weight - walls' support) + fluid wall shear)
-    t_sh, f_sh = fluid_wall_shear(a.run, times, a.tstart, a.tend, model == "A")
+    t_sh, f_sh = fluid_wall_shear(a.run, times, a.tstart, a.tend, model == "A", (NX, NY, NZ), DX)
     shear_share = float(f_sh.mean()) / weight if len(f_sh) else float("nan")
     shear_sem = batch_sem(f_sh) / weight if len(f_sh) >= 2 * NB else float("nan")
     p_z = alpha_solver = np.full(NZ, np.nan)
