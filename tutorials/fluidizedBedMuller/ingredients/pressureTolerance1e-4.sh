@@ -13,7 +13,7 @@
 # |ddt(alpha) + div(alpha phi)| dt averaged over the cells, was 1.7e-6 at 1e-4 against 2.1e-8 at 1e-6,
 # about a thousandth of the fluid fraction's change per step where the bed moves (a particle crosses a
 # 1.2 mm cell in some 40 steps). The drag, which sets the bed, takes the gas velocity from that flux.
-# The rule that decides (written before the run, 2026-12-07 22:37 UTC, issue 44; oneCorrector's and
+# The rule that decides (written before the run, committed 2026-12-07 22:34 UTC in dacbbcc, issue 44; oneCorrector's and
 # noMomentumPredictor's): the run goes to 10 s on one rank with main's build at 9c46d4c (whose solver
 # differs from a1d4e4c's, that of the noMomentumPredictor run, only by the stage spread line, 7804068),
 # cut into the four 2 s windows 2-4 ... 8-10 s (validation/muller/windows.py RUN 2 10 4), and is judged
