@@ -6,6 +6,11 @@ a field's internalField and of a particle cloud's positions, in both of OpenFOAM
                                               gzipped (writeCompression: path or path.gz)
     read_cloud_positions(path)                numpy array (n, 3) of a cloud's `positions` file
                                               (entries "(x y z) cell")
+    read_label_list(path)                     numpy int array of a labelList file (e.g. a processor's
+                                              constant/polyMesh/cellProcAddressing), ascii or binary
+    read_decomposed_field(run, time, name, n_cells)
+                                              a field of a decomposed run assembled from its
+                                              processor*/<time>/ parts by cellProcAddressing
 
 A uniform field is returned as n_cells copies of its value and needs n_cells (the reader does not
 read the mesh). What cannot be read raises FieldFormatError, whose message names the file; a
@@ -19,7 +24,8 @@ import re
 
 import numpy as np
 
-__all__ = ["FieldFormatError", "read_internal_field", "read_cloud_positions"]
+__all__ = ["FieldFormatError", "read_internal_field", "read_cloud_positions", "read_label_list",
+           "read_decomposed_field"]
 
 
 class FieldFormatError(ValueError):
@@ -117,3 +123,43 @@ def read_cloud_positions(path):
     if n and not (np.all(rows["open"] == b"(") and np.all(rows["close"] == b")")):
         raise FieldFormatError(f"{path}: binary positions not in the (x y z) cell layout")
     return rows["xyz"].astype(float)
+
+
+def read_label_list(path):
+    data = _read_bytes(path)
+    binary, _, label, end = _header(data)
+    body = data[end:]
+    m = re.search(rb"(\d+)\s*\(", re.sub(rb"//[^\n]*", lambda x: b" " * len(x.group(0)), body))
+    if not m:
+        raise FieldFormatError(f"{path}: no list 'N (' after the header")
+    n = int(m.group(1))
+    if binary:
+        raw = body[m.end():m.end() + n * label]
+        if len(raw) != n * label:
+            raise FieldFormatError(f"{path}: a binary list of {n} labels that ends early")
+        return np.frombuffer(raw, dtype=np.int32 if label == 4 else np.int64).astype(int)
+    values = _numbers(body[m.end():], n)
+    if len(values) != n:
+        raise FieldFormatError(f"{path}: {len(values)} labels read for a list of {n}")
+    return values.astype(int)
+
+
+def read_decomposed_field(run, time, name, n_cells):
+    """The field `name` at `time` (the folder's name) of a run decomposed into run/processor*/, on the
+    whole mesh of n_cells: each part placed by its processor's cellProcAddressing. None when a part
+    lacks it; FieldFormatError when the parts do not fill the mesh once."""
+    parts = sorted(d for d in os.listdir(run) if re.fullmatch(r"processor\d+", d)) if os.path.isdir(run) else []
+    if not parts or not all(os.path.exists(os.path.join(run, d, time, name)) or
+                            os.path.exists(os.path.join(run, d, time, name + ".gz")) for d in parts):
+        return None
+    out, seen = None, np.zeros(n_cells, dtype=int)
+    for d in parts:
+        where = read_label_list(os.path.join(run, d, "constant", "polyMesh", "cellProcAddressing"))
+        values = read_internal_field(os.path.join(run, d, time, name), len(where))
+        if out is None:
+            out = np.zeros((n_cells,) + values.shape[1:])
+        out[where] = values
+        seen[where] += 1
+    if not (seen == 1).all():
+        raise FieldFormatError(f"{run}: the processors' cellProcAddressing do not cover the {n_cells} cells once")
+    return out

@@ -31,8 +31,9 @@ def fluid_wall_shear(run, times, tstart, tend, model_a, shape, dx):
     rho_f nu sw (u_z - 0) / (dx / 2) dx^2 over each wall face of the uniform block of shape (nx, ny, nz)
     cells of size dx, x fastest (no-slip walls; sw = alpha in Model A, 1 in Model B). The transposed
     stress part is left out: its z part at a wall face is nu du_n/dz with u_n = 0 on the wall.
-    times: (t, folder name) of the run's written times; a run on several ranks gives only its
-    reconstructed ones, a written time without U or alpha is passed over. Returns (t, F) arrays."""
+    times: (t, folder name) of the run's written times; a run on several ranks is read from its
+    processor folders where a time is not reconstructed; a written time without U or alpha is passed
+    over. Returns (t, F) arrays."""
     nx, ny, nz = shape
     n = nx * ny * nz
     i, j = np.arange(n) % nx, (np.arange(n) // nx) % ny
@@ -42,10 +43,14 @@ def fluid_wall_shear(run, times, tstart, tend, model_a, shape, dx):
         if not (tstart - 1e-9 <= t <= tend + 1e-9):
             continue
         u, alpha = os.path.join(run, d, "U"), os.path.join(run, d, "alpha")
-        if not (os.path.isfile(u) and os.path.isfile(alpha)):
-            continue
-        uz = foam_fields.read_internal_field(u, n)[:, 2]
-        sw = foam_fields.read_internal_field(alpha, n) if model_a else 1.0
+        if os.path.isfile(u) and os.path.isfile(alpha):
+            U, a = foam_fields.read_internal_field(u, n), foam_fields.read_internal_field(alpha, n)
+        else:
+            U, a = (foam_fields.read_decomposed_field(run, d, f, n) for f in ("U", "alpha"))
+            if U is None or a is None:
+                continue
+        uz = U[:, 2]
+        sw = a if model_a else 1.0
         out_t.append(t)
         out_f.append(float(np.sum(faces * ref.RHO_F * ref.NU * sw * uz / (0.5 * dx) * dx * dx)))
     return np.array(out_t), np.array(out_f)

@@ -762,6 +762,28 @@ with tempfile.TemporaryDirectory() as tmp:
             refused.append(str(e).startswith(os.path.join(tmp, name) + ":"))
     check(all(refused), "foam_fields refuses a uniform field without the number of cells, a file without "
           "internalField and a missing file, naming it: %s" % refused)
+    # a decomposed run: two processors' parts (cells 1, 3 and 0, 2 of four), their cellProcAddressing
+    # ascii and binary; a part without its field gives None, parts that miss a cell are refused
+    lhead = b'FoamFile { version 2.0; format %s; arch "LSB;label=32;scalar=64"; class labelList; }\n'
+    shead = b'FoamFile { version 2.0; format ascii; class volScalarField; }\n'
+    for k, (cells, vals, fmt) in enumerate((([1, 3], [10.0, 30.0], b"ascii"), ([0, 2], [0.5, 20.0], b"binary"))):
+        os.makedirs(os.path.join(tmp, "dec", "processor%d" % k, "constant", "polyMesh"))
+        os.makedirs(os.path.join(tmp, "dec", "processor%d" % k, "1"))
+        body = (b"2\n(\n%d\n%d\n)\n" % tuple(cells)) if fmt == b"ascii" else b"2(" + struct.pack("<2i", *cells) + b")\n"
+        open(os.path.join(tmp, "dec", "processor%d" % k, "constant", "polyMesh", "cellProcAddressing"), "wb").write(
+            lhead % fmt + b"// a comment\n" + body)
+        open(os.path.join(tmp, "dec", "processor%d" % k, "1", "alpha"), "wb").write(
+            shead + b"internalField nonuniform List<scalar> 2(%r %r);\n" % tuple(vals))
+    whole = foam_fields.read_decomposed_field(os.path.join(tmp, "dec"), "1", "alpha", 4)
+    none = foam_fields.read_decomposed_field(os.path.join(tmp, "dec"), "1", "U", 4)
+    try:
+        foam_fields.read_decomposed_field(os.path.join(tmp, "dec"), "1", "alpha", 5)
+        short = ""
+    except foam_fields.FieldFormatError as e:
+        short = str(e)
+    check(whole is not None and whole.tolist() == [0.5, 10.0, 20.0, 30.0] and none is None and "cover the 5 cells" in short,
+          "foam_fields: a field of a decomposed run assembled by cellProcAddressing (ascii and binary): %s; a missing "
+          "field gives None (%s); parts that do not cover the mesh are refused: %r" % (whole, none, short))
 
 # the Mueller physics checks (issue 42): muller_flux.balance on profiles whose flux is known,
 # muller_references' minimum fluidization (Di Felice's superficial law near Ergun, the printed slip
