@@ -147,7 +147,8 @@ def read_label_list(path):
 def read_decomposed_field(run, time, name, n_cells):
     """The field `name` at `time` (the folder's name) of a run decomposed into run/processor*/, on the
     whole mesh of n_cells: each part placed by its processor's cellProcAddressing. None when a part
-    lacks it; FieldFormatError when the parts do not fill the mesh once."""
+    lacks the field; FieldFormatError, naming the file, when a part's cellProcAddressing is missing or
+    unreadable, or the parts do not fill the mesh once."""
     parts = sorted(d for d in os.listdir(run) if re.fullmatch(r"processor\d+", d)) if os.path.isdir(run) else []
     if not parts or not all(os.path.exists(os.path.join(run, d, time, name)) or
                             os.path.exists(os.path.join(run, d, time, name + ".gz")) for d in parts):
@@ -155,6 +156,8 @@ def read_decomposed_field(run, time, name, n_cells):
     out, seen = None, np.zeros(n_cells, dtype=int)
     for d in parts:
         where = read_label_list(os.path.join(run, d, "constant", "polyMesh", "cellProcAddressing"))
+        if len(where) and (where.min() < 0 or where.max() >= n_cells):
+            raise FieldFormatError(f"{run}/{d}: cellProcAddressing has cells outside 0..{n_cells - 1}")
         values = read_internal_field(os.path.join(run, d, time, name), len(where))
         if out is None:
             out = np.zeros((n_cells,) + values.shape[1:])

@@ -43,7 +43,7 @@ def fluid_wall_shear(run, times, tstart, tend, model_a, shape, dx):
         if not (tstart - 1e-9 <= t <= tend + 1e-9):
             continue
         u, alpha = os.path.join(run, d, "U"), os.path.join(run, d, "alpha")
-        if os.path.isfile(u) and os.path.isfile(alpha):
+        if all(os.path.isfile(f) or os.path.isfile(f + ".gz") for f in (u, alpha)):
             U, a = foam_fields.read_internal_field(u, n), foam_fields.read_internal_field(alpha, n)
         else:
             U, a = (foam_fields.read_decomposed_field(run, d, f, n) for f in ("U", "alpha"))
