@@ -100,14 +100,20 @@ def read_internal_field(path, n_cells=None):
     return values.reshape(n, 3) if width == 3 else values
 
 
-def read_cloud_positions(path):
-    """The (x, y, z) of every particle of a cloud's positions file (entries "(x y z) cell")."""
+def _read_list(path, what):
+    """(bytes, binary?, bytes per scalar, bytes per label, N, offset after its '(') of a file holding
+    one list 'N (' after its header; FieldFormatError naming the file and `what` when there is none."""
     data = _read_bytes(path)
     binary, scalar, label, end_of_header = _header(data)
     m = re.compile(rb"\s(\d+)\s*\(").search(data, end_of_header)
     if not m:
-        raise FieldFormatError(f"{path}: no list of positions")
-    n, start = int(m.group(1)), m.end()
+        raise FieldFormatError(f"{path}: no list of {what}")
+    return data, binary, scalar, label, int(m.group(1)), m.end()
+
+
+def read_cloud_positions(path):
+    """The (x, y, z) of every particle of a cloud's positions file (entries "(x y z) cell")."""
+    data, binary, scalar, label, n, start = _read_list(path, "positions")
     if not binary:
         values = _numbers(data[start:], 4 * n)
         if len(values) != 4 * n:
@@ -126,19 +132,13 @@ def read_cloud_positions(path):
 
 
 def read_label_list(path):
-    data = _read_bytes(path)
-    binary, _, label, end = _header(data)
-    body = data[end:]
-    m = re.search(rb"(\d+)\s*\(", re.sub(rb"//[^\n]*", lambda x: b" " * len(x.group(0)), body))
-    if not m:
-        raise FieldFormatError(f"{path}: no list 'N (' after the header")
-    n = int(m.group(1))
+    data, binary, _, label, n, start = _read_list(path, "labels")
     if binary:
-        raw = body[m.end():m.end() + n * label]
-        if len(raw) != n * label:
-            raise FieldFormatError(f"{path}: a binary list of {n} labels that ends early")
+        raw = data[start:start + n * label]
+        if len(raw) != n * label or data[start + n * label:start + n * label + 1] != b")":
+            raise FieldFormatError(f"{path}: a binary list of {n} labels that does not end where it should")
         return np.frombuffer(raw, dtype=np.int32 if label == 4 else np.int64).astype(int)
-    values = _numbers(body[m.end():], n)
+    values = _numbers(data[start:], n)
     if len(values) != n:
         raise FieldFormatError(f"{path}: {len(values)} labels read for a list of {n}")
     return values.astype(int)

@@ -380,7 +380,7 @@ def main():
     sp0 = species_index(first["radius"])
     vol = [float(np.sum(4.0 / 3 * math.pi * first["radius"][sp0 == s] ** 3)) for s in range(len(SPECIES))]
     dp_ref = ref.dp_weight(sum(vol))
-    weight = (ref.RHO_P - ref.RHO_F) * ref.G * sum(vol)
+    weight = dp_ref * ref.A                     # N
     # where the weight goes: the walls' z forces on the particles (DEM/tubeWalls.liggghts), their
     # window mean over the bed's buoyant weight; nan for a run made before the walls stored them
     wall_share = wall_share_sem = float("nan")

@@ -108,7 +108,7 @@ def write_table(path, runs, case):
                             float(b["mixing_width_mm"]), float(b["mixing_width_sem_mm"]), float(b["window_s"]),
                             float(b["wall_s"]), 100 * r["share"], r["dem_per_fluid"], r["coupling_per_fluid"],
                             percent(b.get("wall_force_share")), percent(shear(b)),
-                            percent(b.get("dp_balance_residual") if shear(b) else "")))
+                            percent(b.get("dp_balance_residual"))))
         f.write("\nalpha_p: particle volumes binned by the cell of their centre, cross-section mean, time mean over "
                 "the window (sem: batch means); R-Z: Richardson-Zaki with the Garside-Al-Dibouni exponent; drag eq.: "
                 "the homogeneous layer under the code's Di Felice drag (references.py).\n")
