@@ -20,6 +20,16 @@
 # fluid stage) and run_info.txt (command, commit, load).
 #
 #   bench/cases/run.sh [-cases "muller khan"] [-np "1 2"] [-pairs N] [-stretch S] [-khanState T] [-baselineTree DIR]
+#   bench/cases/run.sh -methods "centre divided bigParticle ..." [-cases ...] [-np ...] [-pairs N] ...
+#
+# -methods LIST: instead of the baseline-tutorial pairs, each method of LIST with the tutorial's
+#   settings, on the same state, in rounds (each round every method once; -pairs N rounds): what a
+#   method costs against centre's run (PCM), the measure Zhang et al. (2023, §V.C) give ("the total
+#   computation costs increase by no more than 5% compared with the PCM"). Written:
+#   results/methods.csv (a row per run, as runs.csv with the method for the settings) and
+#   results/methods.md (ratios.py -methods: per case, rank count and method the median cost per
+#   simulated s, its ratio to centre's in the same round, the coupling share and what the method's
+#   coupling adds to centre's, as a share of centre's run). LIST must hold centre.
 #
 # -pairs N: N baseline-tutorial pairs per case and rank count, run in turn (baseline, tutorial,
 #   baseline, ...; default 1): the ratio is taken pair by pair and its median reported with the
@@ -41,9 +51,9 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 . "$top/etc/bashrc" || exit 1
 . "$here/../solverLog.sh"   # run_solver, stage timers, loop wall time
-cases="muller khan"; nps="1 2"; pairs=1; stretch=0.1; khan_t=3; baseline_tree=
+cases="muller khan"; nps="1 2"; pairs=1; stretch=0.1; khan_t=3; baseline_tree=; methods=
 while [ $# -gt 0 ]; do
-    case "$1" in -cases|-np|-pairs|-stretch|-khanState|-baselineTree)
+    case "$1" in -cases|-np|-pairs|-stretch|-khanState|-baselineTree|-methods)
         [ $# -ge 2 ] || { echo "bench/cases: $1 needs a value (see -h)" >&2; exit 2; } ;;
     esac
     case "$1" in
@@ -53,6 +63,7 @@ while [ $# -gt 0 ]; do
         -stretch) stretch="$2"; shift 2 ;;
         -khanState) khan_t="$2"; shift 2 ;;
         -baselineTree) baseline_tree="$2"; shift 2 ;;
+        -methods) methods="$2"; shift 2 ;;
         -h|--help) sed -n '2,/^set -uo/{/^#/p}' "$0"; exit 0 ;;
         *) echo "bench/cases: unknown option '$1' (see -h)" >&2; exit 2 ;;
     esac
@@ -63,6 +74,15 @@ done
 for np in $nps; do
     case "$np" in 1|2) ;; *) echo "bench/cases: np $np: 1 or 2 ranks" >&2; exit 2 ;; esac
 done
+if [ -n "$methods" ]; then
+    for m in $methods; do
+        case "$m" in centre|divided|bigParticle|twoGrid|gaussian|diffusion|sizeAwareDiffusion) ;;
+            *) echo "bench/cases: unknown method '$m' (centre divided bigParticle twoGrid gaussian diffusion sizeAwareDiffusion)" >&2; exit 2 ;;
+        esac
+    done
+    [[ " $methods " == *" centre "* ]] || { echo "bench/cases: -methods needs centre (each method's cost is taken against it)" >&2; exit 2; }
+    [ -z "$baseline_tree" ] || { echo "bench/cases: -methods runs the tutorial's settings only (no -baselineTree)" >&2; exit 2; }
+fi
 [[ "$pairs" =~ ^[1-9][0-9]*$ ]] || { echo "bench/cases: -pairs '$pairs' must be a whole number >= 1" >&2; exit 2; }
 if [ -n "$baseline_tree" ]; then
     [ -x "$baseline_tree/platforms/$WM_OPTIONS/bin/coarseDemFoam" ] && [ -f "$baseline_tree/etc/bashrc" ] ||
@@ -124,19 +144,21 @@ khan_baseline() {
 
 # ---- running one case: the solver from the state, its time loop's wall time and stage timers
 csv="$results/runs.csv"
+[ -z "$methods" ] || csv="$results/methods.csv"
 
 # binaries SETTINGS: the tree whose build runs these settings (the baseline's own with -baselineTree)
 binaries() { [ "$1" = baseline ] && [ -n "$baseline_tree" ] && echo "$baseline_tree" || echo "$top"; }
 # rows of earlier runs are kept for the cases and rank counts this run does not measure (np 1 and 2
 # may be measured apart, each on a quiet machine); run_info.txt gets a line per run
 header="case,settings,np,simulated_s,wall_s,wall_per_simulated_s,dem_s,fluid_s,coupling_s,build"
+[ -z "$methods" ] || header="case,method,np,simulated_s,wall_s,wall_per_simulated_s,dem_s,fluid_s,coupling_s,build"
 if [ -f "$csv" ] && [ "$(head -1 "$csv")" = "$header" ]; then
     awk -F, -v cs=" $cases " -v ns=" $nps " 'NR == 1 || index(cs, " " $1 " ") == 0 || index(ns, " " $3 " ") == 0' "$csv" > "$csv.kept"
     mv "$csv.kept" "$csv"
 else
     echo "$header" > "$csv"
 fi
-record() { # case settings np simulated log
+record() { # case settings-or-method np simulated log
     local w build=$build_top
     [ "$(binaries "$2")" = "$top" ] || build=$build_baseline
     w=$(loop_wall "$5")
@@ -145,17 +167,17 @@ record() { # case settings np simulated log
 }
 
 # the Mueller demo in a copy of the tutorial (its own Allrun: the state, the sampling, the demo's 0.1 s)
-muller() { # settings np
-    local d="$work/muller_$1_np$2"
+muller() { # settings np [method: the tutorial's bigParticle; given, it is recorded instead of the settings]
+    local m="${3:-bigParticle}" d="$work/muller_$1_np$2${3:+_$3}"
     rm -rf "$d"; mkdir -p "$d"
     cp -r "$top/tutorials/fluidizedBedMuller" "$d/"
     rm -rf "$d/fluidizedBedMuller/runs"
     [ "$1" = baseline ] && muller_baseline "$d/fluidizedBedMuller"
-    log "muller $1 np $2: the demo's 0.1 s"
+    log "muller $1 np $2 $m: the demo's 0.1 s"
     local bin; bin=$(binaries "$1")
-    ( . "$bin/etc/bashrc" && cd "$d/fluidizedBedMuller" && COARSEDEM_DIR="$bin" ./Allrun -mode demo -model bigParticle -np "$2" > "$d/log.Allrun" 2>&1 ) ||
+    ( . "$bin/etc/bashrc" && cd "$d/fluidizedBedMuller" && COARSEDEM_DIR="$bin" ./Allrun -mode demo -model "$m" -np "$2" > "$d/log.Allrun" 2>&1 ) ||
         { echo "bench/cases: the Mueller demo failed ($d/log.Allrun)" >&2; return 1; }
-    record muller "$1" "$2" 0.1 "$d/fluidizedBedMuller/runs/bigParticle_dx1_U0.9_demo/log.coarseDemFoam"
+    record muller "${3:-$1}" "$2" 0.1 "$d/fluidizedBedMuller/runs/${m}_dx1_U0.9_demo/log.coarseDemFoam"
 }
 
 # the binary bed: a state made once with the tutorial's settings, then STRETCH s from it
@@ -179,14 +201,14 @@ khan_make_state() {
     echo "$last" > "$khan_state/state_time"
     echo "$khan_t" > "$khan_state/requested"
 }
-khan() { # settings np
-    local d="$work/khan_$1_np$2" t0 tend
+khan() { # settings np [method: the tutorial's divided; given, it is recorded instead of the settings]
+    local m="${3:-divided}" d="$work/khan_$1_np$2${3:+_$3}" t0 tend
     t0=$(cat "$khan_state/state_time")
     tend=$(add "$t0" "$stretch")
     rm -rf "$d"; mkdir -p "$d"
     # the case files as the tutorial makes them now (with its decomposeParDict for np > 1), the mesh
     # and fields of the state
-    "$top/tutorials/binaryBedKhan/Allrun" -mode short -young 1e5 -method divided -U 0.015 -np "$2" -makeCase "$d" ||
+    "$top/tutorials/binaryBedKhan/Allrun" -mode short -young 1e5 -method "$m" -U 0.015 -np "$2" -makeCase "$d" ||
         { echo "bench/cases: the tutorial did not make the binary bed's case" >&2; return 1; }
     rm -rf "$d/0"
     cp -r "$khan_state/constant/polyMesh" "$d/constant/"
@@ -196,10 +218,10 @@ khan() { # settings np
     [ "$1" = baseline ] && khan_baseline "$d"
     sed -i "s/^endTime .*/endTime         $tend;/" "$d/system/controlDict"
     if [ "$2" -gt 1 ]; then (cd "$d" && decomposePar -force > log.decomposePar 2>&1) || return 1; fi
-    log "khan $1 np $2: $stretch s from t = $t0 s"
+    log "khan $1 np $2 $m: $stretch s from t = $t0 s"
     local bin; bin=$(binaries "$1")
     ( . "$bin/etc/bashrc" && run_solver "$d" "$2" ) || { echo "bench/cases: the binary bed failed ($d/log.coarseDemFoam)" >&2; return 1; }
-    record khan "$1" "$2" "$stretch" "$d/log.coarseDemFoam"
+    record khan "${3:-$1}" "$2" "$stretch" "$d/log.coarseDemFoam"
     rm -rf "$d"/post/dump* "$d"/processor*/[0-9]*
 }
 
@@ -233,20 +255,28 @@ for c in $cases; do
     if [ "$c" = khan ]; then
         khan_make_state || exit 1
         # serial, so with the serial runs
-        if [[ " $nps " == *" 1 "* ]]; then khan_neighbour || exit 1; fi
+        if [ -z "$methods" ] && [[ " $nps " == *" 1 "* ]]; then khan_neighbour || exit 1; fi
     fi
     for np in $nps; do
         for ((i = 1; i <= pairs; ++i)); do
-            for s in baseline tutorial; do
-                "$c" "$s" "$np" || exit 1
-            done
+            if [ -n "$methods" ]; then
+                for m in $methods; do "$c" tutorial "$np" "$m" || exit 1; done
+            else
+                for s in baseline tutorial; do "$c" "$s" "$np" || exit 1; done
+            fi
         done
     done
 done
 
-/usr/bin/python3 "$here/ratios.py" "$csv" "$results/cases.csv" > "$results/ratios.md" || exit 1
+if [ -n "$methods" ]; then
+    /usr/bin/python3 "$here/ratios.py" -methods "$csv" > "$results/methods.md" || exit 1
+    table="$results/methods.md"
+else
+    /usr/bin/python3 "$here/ratios.py" "$csv" "$results/cases.csv" > "$results/ratios.md" || exit 1
+    table="$results/ratios.md"
+fi
 {
-    echo "command: bench/cases/run.sh -cases \"$cases\" -np \"$nps\" -pairs $pairs -stretch $stretch -khanState $khan_t${baseline_tree:+ -baselineTree $baseline_tree}"
+    echo "command: bench/cases/run.sh -cases \"$cases\" -np \"$nps\" -pairs $pairs -stretch $stretch -khanState $khan_t${baseline_tree:+ -baselineTree $baseline_tree}${methods:+ -methods \"$methods\"}"
     echo "commit: $code_version"
     [ -n "$baseline_tree" ] && echo "baseline rows: the binaries of $baseline_tree at $build_baseline"
     # which binaries ran (checksum, build time, path): a tree's commit need not be the one it was built at
@@ -256,4 +286,4 @@ done
     echo "machine: $(nproc) cores; load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"
     echo
 } >> "$results/run_info.txt"
-cat "$results/ratios.md"
+cat "$table"
