@@ -13,16 +13,18 @@
  * drawn from an isotropic normal distribution of the given rms speed. Usage:
  *     build/kernel_reuse [V_RMS_M_PER_S ...]     (default 0.05 0.15 0.3; dt 1.8e-4 s, the CFD step)
  */
-#include "../muller_bed.h"
+#include "../../src/core/tools/box_mesh.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-#define N_PARTICLES MULLER_N_PARTICLES
+#define N_PARTICLES 9240
 #define DT 1.8e-4
+#define RADIUS 0.6e-3
 
-static double normal(void) { return sqrt(-2.0 * log(muller_uniform())) * cos(6.283185307179586 * muller_uniform()); }
+static double uniform(void) { return (rand() + 0.5) / ((double)RAND_MAX + 1.0); }
+static double normal(void) { return sqrt(-2.0 * log(uniform())) * cos(6.283185307179586 * uniform()); }
 
 /* 1 when particle i's kernel holds the same cells with the same weights in a and b */
 static int same_kernel(const cdc_kernels *a, const cdc_kernels *b, int i)
@@ -44,8 +46,10 @@ static int fail(cdc_context *ctx, const char *what)
 
 int main(int argc, char **argv)
 {
+    const double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.010, 0.044, 0.120};
+    const uint8_t walls[6] = {CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL, CDC_FACE_WALL};
     box_mesh b;
-    if (muller_mesh(&b)) return fail(NULL, "mesh");
+    if (box_mesh_create(&b, 8, 36, 100, lo, hi, walls, 0.0)) return fail(NULL, "mesh");
     cdc_context *ctx;
     if (cdc_context_create(&b.mesh, &ctx) != CDC_OK) return fail(NULL, "context");
     cdc_kernel_params prm = {0};
@@ -64,7 +68,10 @@ int main(int argc, char **argv)
         const double v_rms = argc > 1 ? atof(argv[s + 1]) : default_speeds[s];
         srand(1);
         for (int i = 0; i < N_PARTICLES; ++i) {
-            muller_place(x0, r, i);
+            r[i] = RADIUS;
+            x0[3 * i] = RADIUS + uniform() * (hi[0] - 2 * RADIUS);
+            x0[3 * i + 1] = RADIUS + uniform() * (hi[1] - 2 * RADIUS);
+            x0[3 * i + 2] = RADIUS + uniform() * 0.040;
             for (int d = 0; d < 3; ++d) x1[3 * i + d] = x0[3 * i + d] + v_rms / sqrt(3.0) * DT * normal();
         }
         const cdc_particles p0 = {N_PARTICLES, x0, r, NULL, NULL}, p1 = {N_PARTICLES, x1, r, NULL, NULL};

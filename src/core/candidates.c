@@ -18,14 +18,24 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* Squared radius of cell c about its centre: its centre to the farthest corner of its box. */
+static double cell_rho2(const cdc_context *ctx, int32_t c)
+{
+    const double *bb = ctx->cell_bbox + 6 * (size_t)c, *xc = ctx->mesh->cell_centres + 3 * (size_t)c;
+    double r2 = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        const double a = xc[d] - bb[d], b = bb[3 + d] - xc[d];
+        r2 += (a > b ? a * a : b * b);
+    }
+    return r2;
+}
+
 void cdc_candidates_free(cdc_candidates *cand)
 {
     free(cand->offsets);
     free(cand->cells);
-    free(cand->facet_offsets);
-    free(cand->facets);
-    cand->offsets = cand->cells = cand->facet_offsets = cand->facets = NULL;
-    cand->facets_version = 0;
+    cand->offsets = NULL;
+    cand->cells = NULL;
     cand->radius = 0.0;
 }
 
@@ -41,7 +51,7 @@ static cdc_status build(cdc_context *ctx, cdc_candidates *cand, double R)
     offsets[0] = 0;
     for (int32_t h = 0; h < nc; ++h) {
         const double *xh = ctx->mesh->cell_centres + 3 * (size_t)h;
-        cdc_status st = cdc_flood_within(ctx, xh, h, 0, R + sqrt(ctx->cell_rho2[h]), &ctx->near_cells);
+        cdc_status st = cdc_flood_within(ctx, xh, h, 0, R + sqrt(cell_rho2(ctx, h)), &ctx->near_cells);
         if (st != CDC_OK) {
             free(offsets);
             cdc_ivec_free(&cells);
@@ -76,7 +86,7 @@ cdc_status cdc_cells_within(cdc_context *ctx, cdc_candidates *cand, const double
         if (st != CDC_OK) return st;
     }
     const double *xs = ctx->mesh->cell_centres + 3 * (size_t)start;
-    if (!cand || radius > cand->radius || cdc_dist2(x, xs) > ctx->cell_rho2[start] * CDC_RADIUS_SLACK)
+    if (!cand || radius > cand->radius || cdc_dist2(x, xs) > cell_rho2(ctx, start) * CDC_RADIUS_SLACK)
         return cdc_flood_within(ctx, x, start, seed_only, radius, cells);
     /* the filter: every cell of the list whose centre is within the radius */
     const double *xv = ctx->cell_xv, r2 = radius * radius * CDC_RADIUS_SLACK;

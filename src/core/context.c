@@ -197,12 +197,6 @@ static cdc_status build_boxes(cdc_context *ctx)
         ctx->total_volume += m->cell_volumes[c];
         for (int d = 0; d < 3; ++d) ctx->cell_xv[4 * (size_t)c + d] = m->cell_centres[3 * (size_t)c + d];
         ctx->cell_xv[4 * (size_t)c + 3] = m->cell_volumes[c];
-        double r2 = 0.0;
-        for (int d = 0; d < 3; ++d) {
-            const double xc = m->cell_centres[3 * (size_t)c + d], a = xc - bb[d], b = bb[3 + d] - xc;
-            r2 += (a > b ? a * a : b * b);
-        }
-        ctx->cell_rho2[c] = r2;
     }
     return CDC_OK;
 }
@@ -221,11 +215,10 @@ cdc_status cdc_context_create(const cdc_mesh *mesh, cdc_context **out)
         const size_t nc = (size_t)mesh->n_cells;
         ctx->cell_bbox = malloc(6 * nc * sizeof(double));
         ctx->cell_xv = malloc(4 * nc * sizeof(double));
-        ctx->cell_rho2 = malloc(nc * sizeof(double));
         ctx->cell_is_box = calloc(nc, 1);
         ctx->stamp = calloc(nc, sizeof(int32_t));
         ctx->face_unit_normal = malloc(3 * (size_t)mesh->n_faces * sizeof(double));
-        if (!ctx->cell_bbox || !ctx->cell_xv || !ctx->cell_rho2 || !ctx->cell_is_box || !ctx->stamp || !ctx->face_unit_normal)
+        if (!ctx->cell_bbox || !ctx->cell_xv || !ctx->cell_is_box || !ctx->stamp || !ctx->face_unit_normal)
             st = cdc_fail(NULL, CDC_ERR_NOMEM, "mesh: out of memory for cell boxes");
         else
             st = build_boxes(ctx);
@@ -250,7 +243,6 @@ void cdc_context_destroy(cdc_context *ctx)
     free(ctx->cell_cells);
     free(ctx->cell_bbox);
     free(ctx->cell_xv);
-    free(ctx->cell_rho2);
     free(ctx->cell_is_box);
     free(ctx->face_unit_normal);
     free(ctx->facets);

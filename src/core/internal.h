@@ -76,9 +76,6 @@ struct cdc_context {
      * candidate filter, the radial weights): one cache line per cell instead of a miss in each of the
      * mesh's two arrays (the volume's load was a sixth of a Gaussian kernel build) */
     double *cell_xv;
-    /* per cell: squared distance from its centre to its box's farthest corner (every point of the
-     * cell lies within it): whether a point may use the cell's candidate lists (candidates.c) */
-    double *cell_rho2;
     uint8_t *cell_is_box;
     /* per face: unit normal (along the face area vector), for the point-location walk */
     double *face_unit_normal;
@@ -94,7 +91,6 @@ struct cdc_context {
     int32_t *facet_offsets, *facet_items;
     int32_t *facet_plane;     /* per facet: its plane's number (a run of coplanar facets in facet order
                                * shares one), so a query skips the faces of a plane it has taken */
-    uint32_t facets_version;  /* changes whenever the facets do: the candidate lists' facets follow */
 
     /* spatial bins for the location fallback, built on first need */
     int bins_built;
@@ -190,11 +186,6 @@ typedef struct cdc_candidates {
     double wanted;     /* largest search radius of the current build */
     double too_large;  /* a radius whose lists would exceed the cap (0: none found yet) */
     int32_t *offsets, *cells;
-    /* per cell h: the wall facets a kernel of the lists' radius about a point of h may mirror across
-     * (owner within R + rho_h of h's centre, plane nearer than that), in the order of the facets'
-     * bins (cdc_wall_planes_near's scan order), made on first need for ctx->facets_version */
-    int32_t *facet_offsets, *facets;
-    uint32_t facets_version; /* 0: no facet lists */
 } cdc_candidates;
 #define CDC_CANDIDATE_CAP ((size_t)1 << 26) /* entries: 256 MB of int32 */
 void cdc_candidates_free(cdc_candidates *cand);
@@ -211,11 +202,9 @@ cdc_status cdc_wall_facets_from_mesh(cdc_context *ctx);
 /* The planes of the wall facets within `radius` of x (owner cell centre within it, plane closer
  * than it), deduplicated (a flat wall's faces are one plane), into planes[] (room for
  * CDC_MAX_WALL_FACETS; more is CDC_ERR_UNSUPPORTED). cdc_nearest_wall_planes() then keeps the
- * mirror planes among them. When cand's cell lists serve the radius and x lies in cell `start`'s
- * sphere, the facets come from start's facet list (made here on first need), else from the
- * facets' bins: the same planes in the same order either way. cand may be NULL. */
-cdc_status cdc_wall_planes_near(cdc_context *ctx, cdc_candidates *cand, int32_t start, const double x[3],
-                                double radius, cdc_plane *planes, int *n_planes);
+ * mirror planes among them. */
+cdc_status cdc_wall_planes_near(cdc_context *ctx, const double x[3], double radius, cdc_plane *planes,
+                                int *n_planes);
 
 /* Cells whose bounding box overlaps the sphere (x, radius), by flood fill from the start cell. */
 cdc_status cdc_cells_overlapping(cdc_context *ctx, const double x[3], int32_t start, int seed_only,

@@ -1676,28 +1676,20 @@ static void test_nearest_cell_sheared(void) { check_nearest_cell(0.5); }
 
 /* Planes of cdc_wall_planes_near against a pass over every facet (the bins' order, no skips), for `count` points of the box
  * [lo, hi] (x sheared by shear * y) and radii up to max_radius: the number of points whose planes
- * (normal, offset) differ; *near_wall counts the points with any plane. With candidate lists for
- * max_radius (cand), each point is also asked through its cell's facet list, which must give the
- * bins' planes bit for bit and in their order: *list_differ counts the points where it does not. */
-static int wall_planes_differ(cdc_context *ctx, cdc_candidates *cand, unsigned long long seed, int count,
-                              const double lo[3], const double hi[3], double shear, double max_radius,
-                              int *near_wall, int *list_differ)
+ * (normal, offset) differ; *near_wall counts the points with any plane. */
+static int wall_planes_differ(cdc_context *ctx, unsigned long long seed, int count, const double lo[3],
+                              const double hi[3], double shear, double max_radius, int *near_wall)
 {
     unsigned long long s = seed;
     int differ = 0;
-    *near_wall = *list_differ = 0;
+    *near_wall = 0;
     for (int t = 0; t < count; ++t) {
         const double y = lo[1] + (hi[1] - lo[1]) * rnd(&s);
         const double x[3] = {lo[0] + (hi[0] - lo[0]) * rnd(&s) + shear * y, y, lo[2] + (hi[2] - lo[2]) * rnd(&s)};
         const double radius = 0.001 + max_radius * rnd(&s);
-        cdc_plane got[CDC_MAX_WALL_FACETS], want[CDC_MAX_WALL_FACETS], listed[CDC_MAX_WALL_FACETS];
-        int n_got = 0, n_want = 0, n_listed = 0;
-        if (cdc_wall_planes_near(ctx, NULL, -1, x, radius, got, &n_got) != CDC_OK) return count + 1;
-        int32_t host = -1;
-        if (cand && cdc_locate_point(ctx, x, -1, &host) == CDC_OK && host >= 0) {
-            if (cdc_wall_planes_near(ctx, cand, host, x, radius, listed, &n_listed) != CDC_OK) return count + 1;
-            *list_differ += n_listed != n_got || memcmp(listed, got, (size_t)n_got * sizeof *got) != 0;
-        }
+        cdc_plane got[CDC_MAX_WALL_FACETS], want[CDC_MAX_WALL_FACETS];
+        int n_got = 0, n_want = 0;
+        if (cdc_wall_planes_near(ctx, x, radius, got, &n_got) != CDC_OK) return count + 1;
         /* every facet, in the order of the bins (the greedy merge below keeps the first facet of a
          * plane, and which facet is first decides it for nearly coplanar ones) */
         const size_t n_bins = (size_t)ctx->facet_nbin[0] * (size_t)ctx->facet_nbin[1] * (size_t)ctx->facet_nbin[2];
@@ -1738,21 +1730,10 @@ static void check_wall_planes(double shear)
     CHECK(box_mesh_create(&b, 12, 10, 8, lo, hi, ALL_WALLS, shear) == 0, "mesh");
     cdc_context *ctx = NULL;
     CHECK(cdc_context_create(&b.mesh, &ctx) == CDC_OK, "context: %s", cdc_create_error());
-    /* candidate lists for radius 0.8 (a cell list search makes them; the facet lists come with the
-     * first wall query through them) */
-    cdc_candidates cand = {0};
-    cand.wanted = 0.8;
-    cdc_ivec cells = {0};
-    const double mid[3] = {0.6 + shear * 0.5, 0.5, 0.4};
-    int32_t mid_cell = -1;
-    CHECK(cdc_locate_point(ctx, mid, -1, &mid_cell) == CDC_OK && mid_cell >= 0, "locate the middle");
-    CHECK(cdc_cells_within(ctx, &cand, mid, mid_cell, 0, 0.8, &cells) == CDC_OK && cand.radius == 0.8, "lists");
-    int near_wall = 0, list_differ = 0;
-    int differ = wall_planes_differ(ctx, &cand, 31, 3000, lo, hi, shear, 0.4, &near_wall, &list_differ);
+    int near_wall = 0;
+    int differ = wall_planes_differ(ctx, 31, 3000, lo, hi, shear, 0.4, &near_wall);
     CHECK(near_wall > 1500, "shear %g: only %d of 3000 points near a wall", shear, near_wall);
     CHECK(differ == 0, "shear %g: %d of 3000 points got other planes than the pass over every facet", shear, differ);
-    CHECK(cand.facet_offsets != NULL && list_differ == 0,
-          "shear %g: %d of 3000 points got other planes (or order) through their cell's facet list", shear, list_differ);
 
     /* the same facets shuffled */
     const int32_t n = ctx->n_facets;
@@ -1773,11 +1754,8 @@ static void check_wall_planes(double shear)
             buf[3 * (size_t)(2 * n + f) + d] = fc->owner[d];
         }
     CHECK(cdc_context_set_wall_facets(ctx, n, buf, buf + 3 * (size_t)n, buf + 6 * (size_t)n) == CDC_OK, "set");
-    /* new facets: the lists follow them (made again at the first query) */
-    differ = wall_planes_differ(ctx, &cand, 37, 3000, lo, hi, shear, 0.8, &near_wall, &list_differ);
+    differ = wall_planes_differ(ctx, 37, 3000, lo, hi, shear, 0.8, &near_wall);
     CHECK(differ == 0, "shear %g, shuffled facets: %d of 3000 points got other planes", shear, differ);
-    CHECK(cand.facets_version == ctx->facets_version && list_differ == 0,
-          "shear %g, shuffled facets: %d of 3000 points differ through the facet lists", shear, list_differ);
     free(buf);
     free(order);
 
@@ -1789,11 +1767,8 @@ static void check_wall_planes(double shear)
                  owners[6] = {0.3, 0, 0.05, 0, 0, 0.05};
     CHECK(cdc_context_set_wall_facets(ctx, 2, centres, areas, owners) == CDC_OK, "set");
     const double plo[3] = {0, 0, 0.01}, phi[3] = {0.3, 0.1, 0.2};
-    differ = wall_planes_differ(ctx, &cand, 41, 500, plo, phi, 0.0, 0.4, &near_wall, &list_differ);
-    CHECK(near_wall > 100 && differ == 0 && list_differ == 0, "tilted pair: %d of 500 points differ (%d near, %d through the lists)",
-          differ, near_wall, list_differ);
-    cdc_candidates_free(&cand);
-    cdc_ivec_free(&cells);
+    differ = wall_planes_differ(ctx, 41, 500, plo, phi, 0.0, 0.4, &near_wall);
+    CHECK(near_wall > 100 && differ == 0, "tilted pair: %d of 500 points differ (%d near)", differ, near_wall);
     cdc_context_destroy(ctx);
     box_mesh_destroy(&b);
 }

@@ -99,16 +99,6 @@ else
     result fail "kernel_reuse 0.05 0.3"; sed 's/^/    /' "$work/reuse.txt" | tail -5
 fi
 
-# bench/wallMirror: builds, refuses a bad round count, and times both builds of the same kernels
-make -s -C "$top/bench/wallMirror" > "$work/make.log" 2>&1 || { result fail "bench: wall_mirror does not build"; cat "$work/make.log"; finish; }
-refused wall-mirror-rounds "ROUNDS must be 1.." "$top/bench/wallMirror/build/wall_mirror" 0
-if "$top/bench/wallMirror/build/wall_mirror" 3 > "$work/mirror.txt" 2>&1 &&
-   grep -Eq "wall-mirrored [0-9.]+ us/particle, unmirrored [0-9.]+ us/particle, ratio [0-9.]+; kernels' checksum [0-9a-f]{16}$" "$work/mirror.txt"; then
-    result ok "wall_mirror 3: $(sed 's/.*medians): //' "$work/mirror.txt")"
-else
-    result fail "wall_mirror 3"; sed 's/^/    /' "$work/mirror.txt" | tail -5
-fi
-
 make -s -C "$top/bench/diffusion" > "$work/make.log" 2>&1 || { result fail "bench: diffusion_fields_bench does not build"; cat "$work/make.log"; finish; }
 db="$top/bench/diffusion/build/diffusion_fields_bench"
 refused diffusion-reps "-r needs 1 to 1000 repetitions" "$db" -r 0

@@ -19,7 +19,7 @@ cdc_status cdc_radial_neighbourhood(cdc_context *ctx, const cdc_particle_in *p, 
     cdc_plane planes[CDC_MAX_WALL_FACETS];
     int n_planes = 0;
     cdc_status st = cdc_cells_within(ctx, search, p->x, p->host, p->ghost, radius, &ctx->near_cells);
-    if (st == CDC_OK && wall_mirror) st = cdc_wall_planes_near(ctx, search, p->host, p->x, radius, planes, &n_planes);
+    if (st == CDC_OK && wall_mirror) st = cdc_wall_planes_near(ctx, p->x, radius, planes, &n_planes);
     if (st != CDC_OK) return st;
     n_planes = cdc_nearest_wall_planes(p->x, planes, n_planes);
     if (n_planes > CDC_MAX_PLANES)
