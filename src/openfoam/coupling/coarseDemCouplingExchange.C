@@ -14,6 +14,21 @@
 namespace Foam
 {
 
+// Model A's fluid feels -alpha_f grad p and alpha_f div tau with the fluid's alpha_f = 1 - alpha_p, and
+// each particle the opposite part, V_p times the field gathered at it. Their sum over the particles is
+// the field integrated against the kernels' alpha_p: with a smoothed alpha_p (diffusion) that is not
+// the fluid's alpha_p, and the pressure drop no longer carries the bed (the liquid bed with diffusion
+// in Model A: dp plus the walls' support 8-14 % short of the weight, in Model B within 1.5 %). The
+// smoothing is self-adjoint in the cells' volumes (implicit diffusion, src/core/diffusion.c), so
+// gathering the smoothed field gives sum V_p S(f)_p = (alpha_p, S f)_V = (S alpha_p, f)_V: the
+// particles get the integral over the fluid's own alpha_p.
+void coarseDemCoupling::smoothForAlphaTerm(volVectorField& field, const cdc_kernels* k) const
+{
+    const smoothingModel& smoothing = voidFraction_.smoothing();
+    if (k != voidFraction_.kernels() || !smoothing.canSmoothLikeAlpha()) return;
+    smoothing.smoothLikeAlpha(reinterpret_cast<double*>(field.primitiveFieldRef().data()), 3);
+}
+
 void coarseDemCoupling::sampleFluid
 (
     const volVectorField& U, const volScalarField& alpha, const volScalarField& p,
@@ -41,11 +56,13 @@ void coarseDemCoupling::sampleFluid
     if (needs & forceModel::needGradP)
     {
         gradP = fvc::grad(p);
+        smoothForAlphaTerm(gradP.ref(), k);
         addVector(gradP().primitiveField(), state.gradP);
     }
     if (needs & forceModel::needDivTau)
     {
         divTau = fvc::laplacian(nuEff, U) + fvc::div(nuEff*noAliasFvc::dev2GradUT(U));
+        smoothForAlphaTerm(divTau.ref(), k);
         addVector(divTau().primitiveField(), state.divTau);
     }
     if ((needs & forceModel::needDUfDt) && DUDt)
