@@ -75,10 +75,13 @@ for np in $nps; do
     case "$np" in 1|2) ;; *) echo "bench/cases: np $np: 1 or 2 ranks" >&2; exit 2 ;; esac
 done
 if [ -n "$methods" ]; then
-    for m in $methods; do
-        case "$m" in centre|divided|bigParticle|twoGrid|gaussian|diffusion|sizeAwareDiffusion) ;;
-            *) echo "bench/cases: unknown method '$m' (centre divided bigParticle twoGrid gaussian diffusion sizeAwareDiffusion)" >&2; exit 2 ;;
-        esac
+    # the methods each tutorial takes (fluidizedBedMuller -model, binaryBedKhan -method)
+    for c in $cases; do
+        case "$c" in muller) known="centre divided bigParticle twoGrid gaussian diffusion diffusionSources" ;;
+                     khan) known="centre divided bigParticle diffusion diffusionSources sizeAwareDiffusion" ;; esac
+        for m in $methods; do
+            [[ " $known " == *" $m "* ]] || { echo "bench/cases: unknown method '$m' for $c (known: $known)" >&2; exit 2; }
+        done
     done
     [[ " $methods " == *" centre "* ]] || { echo "bench/cases: -methods needs centre (each method's cost is taken against it)" >&2; exit 2; }
     [ -z "$baseline_tree" ] || { echo "bench/cases: -methods runs the tutorial's settings only (no -baselineTree)" >&2; exit 2; }

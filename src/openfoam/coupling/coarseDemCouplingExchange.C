@@ -14,19 +14,26 @@
 namespace Foam
 {
 
-// Model A's fluid feels -alpha_f grad p and alpha_f div tau with the fluid's alpha_f = 1 - alpha_p, and
-// each particle the opposite part, V_p times the field gathered at it. Their sum over the particles is
-// the field integrated against the kernels' alpha_p: with a smoothed alpha_p (diffusion) that is not
-// the fluid's alpha_p, and the pressure drop no longer carries the bed (the liquid bed with diffusion
-// in Model A: dp plus the walls' support 8-14 % short of the weight, in Model B within 1.5 %). The
-// smoothing is self-adjoint in the cells' volumes (implicit diffusion, src/core/diffusion.c), so
-// gathering the smoothed field gives sum V_p S(f)_p = (alpha_p, S f)_V = (S alpha_p, f)_V: the
-// particles get the integral over the fluid's own alpha_p.
-void coarseDemCoupling::smoothForAlphaTerm(volVectorField& field, const cdc_kernels* k) const
+// Model A's fluid carries -alpha_f grad p, and each particle -V_p grad p gathered at it. Summed over the
+// particles, V_p times a field gathered with kernels K is the field integrated against K's alpha_p, and
+// the fluid's alpha_p is the void-fraction kernels' spread, smoothed: gathered with other kernels
+// (backgroundFields) or unsmoothed (diffusion), the particles and the fluid describe different solids
+// and the pressure drop no longer carries the bed (the liquid bed with diffusion in Model A: dp plus the
+// walls' support 4-14 % short of the weight, Model B within 1.5 %). So in Model A grad p is gathered
+// with the void-fraction kernels after smoothing it as alpha_p: the smoothing is self-adjoint in the
+// cells' volumes (implicit diffusion, src/core/diffusion.c), so sum V_p S(f)_p = (alpha_k, S f)_V =
+// (S alpha_k, f)_V, the integral over the fluid's own alpha_p. div tau the same way: the fluid's
+// div(alpha_f tau) = alpha_f div tau + tau . grad(alpha_f), whose first part this matches.
+// sizeAwareDiffusion (an operator per size class) cannot smooth another field: gathered unsmoothed.
+vectorField coarseDemCoupling::asAlphaSees(const vectorField& field) const
 {
+    vectorField seen(field);
     const smoothingModel& smoothing = voidFraction_.smoothing();
-    if (k != voidFraction_.kernels() || !smoothing.canSmoothLikeAlpha()) return;
-    smoothing.smoothLikeAlpha(reinterpret_cast<double*>(field.primitiveFieldRef().data()), 3);
+    if (smoothing.canSmoothLikeAlpha())
+    {
+        smoothing.smoothLikeAlpha(reinterpret_cast<double*>(seen.data()), 3);
+    }
+    return seen;
 }
 
 void coarseDemCoupling::sampleFluid
@@ -49,6 +56,25 @@ void coarseDemCoupling::sampleFluid
     state.alphaf.setSize(n);
     fields.push_back({alpha.primitiveField().cdata(), 1, state.alphaf.data()});
     tmp<volVectorField> gradP, divTau, vorticity;
+    // Model A's grad p and div tau as alpha_p sees them (asAlphaSees), gathered with the void-fraction
+    // kernels: with the others when those sample the fluid, apart when background kernels do
+    const cdc_kernels* kAlpha = voidFraction_.kernels();
+    std::vector<kernelTransfer::field> alphaFields;
+    vectorField gradPSeen, divTauSeen;
+    auto addAlphaTerm = [&](const vectorField& field, vectorField& seen, vectorField& out)
+    {
+        if (modelB_)
+        {
+            addVector(field, out);
+            return;
+        }
+        seen = asAlphaSees(field);
+        out.setSize(n);
+        (k == kAlpha ? fields : alphaFields).push_back
+        (
+            {reinterpret_cast<const double*>(seen.cdata()), 3, reinterpret_cast<double*>(out.data())}
+        );
+    };
     // With no particle on any rank (an open system before its first particle, a gas-only run) the
     // derived fields would be computed for nobody: the stress divergence alone cost 14 % of the
     // particleJet gas run
@@ -56,14 +82,12 @@ void coarseDemCoupling::sampleFluid
     if (needs & forceModel::needGradP)
     {
         gradP = fvc::grad(p);
-        smoothForAlphaTerm(gradP.ref(), k);
-        addVector(gradP().primitiveField(), state.gradP);
+        addAlphaTerm(gradP().primitiveField(), gradPSeen, state.gradP);
     }
     if (needs & forceModel::needDivTau)
     {
         divTau = fvc::laplacian(nuEff, U) + fvc::div(nuEff*noAliasFvc::dev2GradUT(U));
-        smoothForAlphaTerm(divTau.ref(), k);
-        addVector(divTau().primitiveField(), state.divTau);
+        addAlphaTerm(divTau().primitiveField(), divTauSeen, state.divTau);
     }
     if ((needs & forceModel::needDUfDt) && DUDt)
     {
@@ -76,6 +100,7 @@ void coarseDemCoupling::sampleFluid
     }
 
     transfer_.gatherTogether(k, mesh_.nCells(), fields);
+    if (!alphaFields.empty()) transfer_.gatherTogether(kAlpha, mesh_.nCells(), alphaFields);
 }
 
 // The fluid's sources from the particles' forces, with the void-fraction kernels (src/core/exchange.c:
