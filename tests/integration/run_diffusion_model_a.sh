@@ -16,14 +16,8 @@ log=$(mktemp /tmp/coarsedem-diffusionA.XXXXXX)
 trap 'rm -f "$log"' EXIT
 "$tut/Allrun" -mode short -method diffusion -modelType A -U 0.020 > "$log" 2>&1
 . "$here/result.sh"   # result ok|fail, npass/nfail, finish
-while IFS= read -r line; do
-    case "$line" in
-        "FAIL: "*"bed voidage"*|"FAIL: "*"particles move"*|"FAIL: "*"layer on the distributor"*)
-            echo "KNOWN (issue 41, not counted): ${line#FAIL: }" ;;
-        PASS:*) result ok "diffusion, Model A: ${line#PASS: }" ;;
-        FAIL:*) result fail "diffusion, Model A: ${line#FAIL: }" ;;
-    esac
-done < "$log"
+results_from -prefix "diffusion, Model A: " -quiet -known "FAIL: *bed voidage*" -known "FAIL: *particles move*" \
+    -known "FAIL: *layer on the distributor*" < "$log"
 grep -q "PASS: .*momentum balance" "$log" ||
     result fail "diffusion, Model A: no momentum balance check passed (the pressure drop and the walls against the weight):"
 if [ $((npass + nfail)) -lt 4 ]; then
